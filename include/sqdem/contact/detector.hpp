@@ -1,0 +1,50 @@
+#pragma once
+// Common-normal contact detector for superquadric-superquadric and superquadric-plane pairs.
+//
+// A contact is a pair of surface points pA on A and pB on B whose outward normals are
+// antiparallel and whose connecting vector is parallel to them (the common normal, 004 §2.1):
+//     nA(pA) = -nB(pB) = n,    pB - pA = -overlap * n.
+// Each point lives on its own surface (moved along its tangent plane, then projected radially
+// with the gauge, see superquadric.hpp), so the unknowns are two tangent displacements per body
+// and the residual is the 4-vector (L t.(nA + nB), t.(pB - pA)) in a tangent basis t of nA,
+// L = sqrt(R_vol,A R_vol,B). It is solved by Gauss-Newton with Levenberg-Marquardt damping and
+// a step cap (safeguarded Newton); the Jacobian uses the surfaces' shape operators, so it stays
+// finite on flat faces and only loses rank where the relative curvature does (line contacts),
+// where the damping picks the minimum-norm step.
+//
+// Closed forms: sphere-sphere, and every superquadric-plane pair (support map).
+// Before any iteration, pairs further apart than the cut-off are culled by bounding spheres and
+// oriented boxes. The result is never NaN/inf: an unresolved pair is a status (contact_geometry.hpp).
+
+#include "sqdem/contact/contact_geometry.hpp"
+#include "sqdem/geometry/plane.hpp"
+#include "sqdem/geometry/pose.hpp"
+#include "sqdem/geometry/superquadric.hpp"
+
+namespace sqdem {
+
+struct DetectorSettings {
+  /// Separated pairs with a gap up to this distance (m) are still solved and reported with
+  /// overlap = -gap; beyond it they are Separated.
+  double cutoff = 0.0;
+  /// Converged when the residual is below tolerance * L (L = sqrt(R_vol,A R_vol,B)).
+  double tolerance = 1e-10;
+  int maxIterations = 100;
+};
+
+/// Cold solve: the initial guess is the pair of support points along the line of centres.
+ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const Superquadric& B,
+                              const Pose& poseB, const DetectorSettings& settings = {});
+
+/// Warm solve: starts from previous.localPointA/B (body frames) when previous converged,
+/// otherwise falls back to a cold solve.
+ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const Superquadric& B,
+                              const Pose& poseB, const DetectorSettings& settings,
+                              const ContactGeometry& previous);
+
+/// Particle A against a wall (body B): closed form through A's support point along -wall.normal.
+/// normal points from A into the wall (= -wall.normal); the wall's curvatures are zero.
+ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const Plane& wall,
+                              const DetectorSettings& settings = {});
+
+}  // namespace sqdem

@@ -1,0 +1,25 @@
+#pragma once
+// Small fixed-size linear algebra used everywhere in sqdem (Eigen, double precision).
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+namespace sqdem {
+
+using Vec2 = Eigen::Vector2d;
+using Vec3 = Eigen::Vector3d;
+using Mat2 = Eigen::Matrix2d;
+using Mat3 = Eigen::Matrix3d;
+using Quat = Eigen::Quaterniond;
+
+/// Two unit vectors t1, t2 with (t1, t2, n) a right-handed orthonormal basis; n must be unit.
+/// Continuous in n away from n = -z (Frisvad/Duff et al. 2017 branchless construction).
+inline void tangentBasis(const Vec3& n, Vec3& t1, Vec3& t2) {
+  const double sign = std::copysign(1.0, n.z());
+  const double a = -1.0 / (sign + n.z());
+  const double b = n.x() * n.y() * a;
+  t1 = Vec3(1.0 + sign * n.x() * n.x() * a, sign * b, -sign * n.x());
+  t2 = Vec3(b, sign + n.y() * n.y() * a, -n.y());
+}
+
+}  // namespace sqdem

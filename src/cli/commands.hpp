@@ -1,0 +1,14 @@
+#pragma once
+// Sub-commands of the sqdem executable; each returns the process exit code.
+
+#include <string>
+#include <vector>
+
+namespace sqdem::cli {
+
+using Arguments = std::vector<std::string>;
+
+int validateTable1(const Arguments& args);
+int geometryProbe(const Arguments& args);
+
+}  // namespace sqdem::cli

@@ -1,0 +1,187 @@
+// `sqdem geometry <file.json|->`: contact geometry probe for one particle pair.
+//
+// Input:  {"particles": [{"centre": [x,y,z], "quaternion": [w,x,y,z], "a":..,"b":..,"c":..,
+//                         "n1":..,"n2":..}, {...}],            (or "eta1"/"eta2" = 2/n)
+//          "E_star": Pa (optional, adds "force"), "cap_factor": 10 (optional),
+//          "cutoff": m (optional, default 0: report gaps only when touching)}
+// Output: one JSON object, keys documented in README.md.
+
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <stdexcept>
+
+#include "commands.hpp"
+#include "sqdem/contact/detector.hpp"
+#include "sqdem/mechanics/elliptic.hpp"
+
+namespace sqdem::cli {
+namespace {
+
+using nlohmann::json;
+
+class InputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+double number(const json& object, const std::string& key, const std::string& where) {
+  if (!object.contains(key)) throw InputError(where + ": missing key '" + key + "'");
+  const json& v = object.at(key);
+  if (!v.is_number() || !std::isfinite(v.get<double>())) {
+    throw InputError(where + ": '" + key + "' must be a finite number");
+  }
+  return v.get<double>();
+}
+
+template <int N>
+Eigen::Matrix<double, N, 1> vector(const json& object, const std::string& key, const std::string& where) {
+  if (!object.contains(key)) throw InputError(where + ": missing key '" + key + "'");
+  const json& v = object.at(key);
+  if (!v.is_array() || v.size() != N) {
+    throw InputError(where + ": '" + key + "' must be an array of " + std::to_string(N) + " numbers");
+  }
+  Eigen::Matrix<double, N, 1> out;
+  for (int i = 0; i < N; ++i) {
+    if (!v[i].is_number()) throw InputError(where + ": '" + key + "' must contain numbers");
+    out(i) = v[i].get<double>();
+  }
+  if (!out.allFinite()) throw InputError(where + ": '" + key + "' must be finite");
+  return out;
+}
+
+void rejectUnknownKeys(const json& object, std::initializer_list<const char*> allowed,
+                       const std::string& where) {
+  for (const auto& [key, value] : object.items()) {
+    bool known = false;
+    for (const char* a : allowed) known = known || key == a;
+    if (!known) {
+      std::string list;
+      for (const char* a : allowed) list += std::string(list.empty() ? "" : ", ") + a;
+      throw InputError(where + ": unknown key '" + key + "' (allowed: " + list + ")");
+    }
+  }
+}
+
+struct Particle {
+  Superquadric shape;
+  Pose pose;
+};
+
+Particle readParticle(const json& p, const std::string& where) {
+  if (!p.is_object()) throw InputError(where + " must be an object");
+  rejectUnknownKeys(p, {"centre", "quaternion", "a", "b", "c", "n1", "n2", "eta1", "eta2"}, where);
+  const auto exponent = [&](const char* n, const char* eta) {
+    if (p.contains(n) && p.contains(eta)) {
+      throw InputError(where + ": give either '" + n + "' or '" + eta + "', not both");
+    }
+    if (p.contains(eta)) return 2.0 / number(p, eta, where);
+    return p.contains(n) ? number(p, n, where) : 2.0;
+  };
+  const double n1 = exponent("n1", "eta1"), n2 = exponent("n2", "eta2");
+  const Eigen::Vector4d q = vector<4>(p, "quaternion", where);
+  if (std::abs(q.norm() - 1.0) > 1e-6) {
+    throw InputError(where + ": 'quaternion' [w,x,y,z] must have unit norm (got " +
+                     std::to_string(q.norm()) + ")");
+  }
+  try {
+    Particle out{Superquadric(number(p, "a", where), number(p, "b", where), number(p, "c", where), n1, n2), {}};
+    out.pose.position = vector<3>(p, "centre", where);
+    out.pose.orientation = Quat(q(0), q(1), q(2), q(3)).normalized();
+    return out;
+  } catch (const std::invalid_argument& e) {
+    throw InputError(where + ": " + e.what());
+  }
+}
+
+json toJson(const Vec3& v) { return json::array({v.x(), v.y(), v.z()}); }
+
+json readInput(const std::string& path) {
+  std::stringstream text;
+  if (path == "-") {
+    text << std::cin.rdbuf();
+  } else {
+    std::ifstream file(path);
+    if (!file) throw InputError("cannot open '" + path + "'");
+    text << file.rdbuf();
+  }
+  try {
+    return json::parse(text.str());
+  } catch (const json::parse_error& e) {
+    throw InputError("'" + path + "' is not valid JSON: " + e.what());
+  }
+}
+
+json probe(const json& input) {
+  if (!input.is_object()) throw InputError("top level must be a JSON object");
+  rejectUnknownKeys(input, {"particles", "E_star", "cap_factor", "cutoff"}, "top level");
+  if (!input.contains("particles") || !input["particles"].is_array() || input["particles"].size() != 2) {
+    throw InputError("'particles' must be an array of exactly two particle objects");
+  }
+  const Particle A = readParticle(input["particles"][0], "particles[0]");
+  const Particle B = readParticle(input["particles"][1], "particles[1]");
+  const double capFactor = input.contains("cap_factor") ? number(input, "cap_factor", "top level") : 10.0;
+  if (!(capFactor > 0.0)) throw InputError("'cap_factor' must be > 0");
+  DetectorSettings settings;
+  if (input.contains("cutoff")) settings.cutoff = number(input, "cutoff", "top level");
+  if (settings.cutoff < 0.0) throw InputError("'cutoff' must be >= 0 (m)");
+
+  const ContactGeometry g = detectContact(A.shape, A.pose, B.shape, B.pose, settings);
+  json out;
+  out["status"] = describe(g.status);
+  out["converged"] = g.converged();
+  out["iterations"] = g.iterations;
+  out["residual"] = g.residual;
+  out["overlap"] = g.overlap;
+  const double RvolRef = std::sqrt(A.shape.volumeEquivalentRadius() * B.shape.volumeEquivalentRadius());
+  out["R_vol_ref"] = RvolRef;
+  if (!g.converged()) return out;
+
+  out["normal"] = toJson(g.normal);
+  out["point_a"] = toJson(g.pointA);
+  out["point_b"] = toJson(g.pointB);
+  out["curvatures_a"] = json::array({g.curvatureA.k1, g.curvatureA.k2});
+  out["curvatures_b"] = json::array({g.curvatureB.k1, g.curvatureB.k2});
+  out["directions_a"] = json::array({toJson(g.curvatureA.d1), toJson(g.curvatureA.d2)});
+  out["directions_b"] = json::array({toJson(g.curvatureB.d1), toJson(g.curvatureB.d2)});
+  const RelativeRadii radii = relativeRadii(g.curvatureA, g.curvatureB, capFactor * RvolRef);
+  out["omega"] = radii.omega;
+  out["Ri"] = radii.Ri;
+  out["Rj"] = radii.Rj;
+  out["Rc"] = radii.Rc;
+  const HertzFactors exact = hertzFactors(radii.ratio(), EccentricityMethod::Exact);
+  const HertzFactors approx = hertzFactors(radii.ratio(), EccentricityMethod::Explicit);
+  out["e2_exact"] = exact.e2;
+  out["e2_approx"] = approx.e2;
+  out["gamma_exact"] = exact.gamma;
+  out["gamma_approx"] = approx.gamma;
+  out["beta_exact"] = exact.beta;
+  out["beta_approx"] = approx.beta;
+  out["normalised_force"] = approx.gamma * std::sqrt(radii.Rc / RvolRef);
+  if (input.contains("E_star")) {
+    const double Estar = number(input, "E_star", "top level");
+    if (!(Estar > 0.0)) throw InputError("'E_star' must be > 0 (Pa)");
+    out["force"] = ellipticHertzForce(Estar, radii.Rc, g.overlap, approx.gamma);
+  }
+  return out;
+}
+
+}  // namespace
+
+int geometryProbe(const Arguments& args) {
+  if (args.size() != 1) {
+    std::cerr << "usage: sqdem geometry <file.json|->\n";
+    return 2;
+  }
+  try {
+    std::cout << probe(readInput(args[0])).dump(2) << "\n";
+    return 0;
+  } catch (const InputError& e) {
+    std::cerr << "sqdem geometry: " << (args[0] == "-" ? "<stdin>" : args[0]) << ": " << e.what() << "\n";
+    return 1;
+  }
+}
+
+}  // namespace sqdem::cli

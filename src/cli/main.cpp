@@ -1,0 +1,45 @@
+// sqdem command-line entry point: dispatches to the sub-commands in commands.hpp.
+
+#include <cstdio>
+#include <exception>
+#include <string>
+
+#include "commands.hpp"
+
+namespace {
+
+constexpr const char* usage = R"(sqdem - DEM for superquadric and ellipsoidal particles
+
+usage: sqdem <command> [arguments]
+
+commands:
+  validate table1        Reproduce Table 1 of the review (Kildashti et al. 2023, seed 004):
+                         normalised elliptic Hertz force of two n = 6 superquadrics in three
+                         poses, against the review's accurate model, FEM and simplified model.
+                         Exit code 1 if sqdem is more than 0.3 % from the accurate model.
+  geometry <file|->      Contact geometry probe: reads a JSON pair description (file, or - for
+                         standard input) and prints the detector's and the elliptic-Hertz
+                         factors' results as one JSON object. See docs in README.md.
+  help, --help, -h       This text.
+)";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const sqdem::cli::Arguments args(argv + 1, argv + argc);
+  if (args.empty() || args[0] == "help" || args[0] == "--help" || args[0] == "-h") {
+    std::fputs(usage, args.empty() ? stderr : stdout);
+    return args.empty() ? 2 : 0;
+  }
+  const sqdem::cli::Arguments rest(args.begin() + 1, args.end());
+  try {
+    if (args[0] == "validate") return sqdem::cli::validateTable1(rest);
+    if (args[0] == "geometry") return sqdem::cli::geometryProbe(rest);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "sqdem %s: error: %s\n", args[0].c_str(), e.what());
+    return 1;
+  }
+  std::fprintf(stderr, "sqdem: unknown command '%s' (allowed: validate, geometry, help)\n",
+               args[0].c_str());
+  return 2;
+}

@@ -1,0 +1,17 @@
+#include "sqdem/contact/contact_geometry.hpp"
+
+namespace sqdem {
+
+const char* describe(ContactStatus status) {
+  switch (status) {
+    case ContactStatus::Converged: return "converged";
+    case ContactStatus::Separated: return "separated beyond the cut-off";
+    case ContactStatus::MaxIterations: return "not converged: iteration limit reached";
+    case ContactStatus::Stalled: return "not converged: residual could not be reduced";
+    case ContactStatus::WrongBranch: return "not converged: solution on the far side of a body";
+    case ContactStatus::NonFinite: return "not converged: non-finite value (degenerate input)";
+  }
+  return "unknown status";
+}
+
+}  // namespace sqdem

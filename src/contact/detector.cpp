@@ -1,0 +1,272 @@
+#include "sqdem/contact/detector.hpp"
+
+#include <Eigen/Cholesky>
+#include <algorithm>
+#include <cmath>
+
+#include "sqdem/geometry/oriented_box.hpp"
+
+namespace sqdem {
+namespace {
+
+using Vec4 = Eigen::Vector4d;
+using Mat4 = Eigen::Matrix4d;
+
+/// The pair seen from A's body frame: B's rotation R (B body -> A body) and centre c.
+struct PairFrame {
+  const Superquadric& A;
+  const Superquadric& B;
+  Mat3 R;
+  Vec3 c;
+  double lengthScale;
+
+  Vec3 toB(const Vec3& p) const { return R.transpose() * (p - c); }
+  Vec3 fromB(const Vec3& x) const { return c + R * x; }
+};
+
+/// Surface data at a point, in A's body frame.
+struct SurfacePoint {
+  Vec3 point, gradient, normal;
+  double gradientNorm = 0.0;
+  Mat3 hessian;
+};
+
+SurfacePoint surfaceOfA(const PairFrame& f, const Vec3& p) {
+  const GaugeDerivatives d = f.A.derivatives(p);
+  const double gn = d.gradient.norm();
+  return {p, d.gradient, d.gradient / gn, gn, d.hessian};
+}
+
+SurfacePoint surfaceOfB(const PairFrame& f, const Vec3& p) {
+  const GaugeDerivatives d = f.B.derivatives(f.toB(p));
+  const Vec3 g = f.R * d.gradient;
+  const double gn = g.norm();
+  return {p, g, g / gn, gn, f.R * d.hessian * f.R.transpose()};
+}
+
+/// One evaluation of the common-normal residual and its Jacobian (see detector.hpp).
+struct Iterate {
+  SurfacePoint a, b;
+  Vec3 t1, t2;    // tangent basis at A
+  Vec3 tb1, tb2;  // tangent basis at B, aligned with (t1, t2) when nB = -nA
+  Vec4 r;
+  Mat4 J;
+  double norm = 0.0;
+  bool finite = false;
+};
+
+Iterate evaluate(const PairFrame& f, const Vec3& pA, const Vec3& pB) {
+  Iterate it;
+  it.a = surfaceOfA(f, pA);
+  it.b = surfaceOfB(f, pB);
+  const Vec3& nA = it.a.normal;
+  const Vec3& nB = it.b.normal;
+  tangentBasis(nA, it.t1, it.t2);
+  const Vec3 u1 = it.t1 - nB * nB.dot(it.t1), u2 = it.t2 - nB * nB.dot(it.t2);
+  if (u1.squaredNorm() >= u2.squaredNorm()) {
+    it.tb1 = u1.normalized();
+    it.tb2 = it.tb1.cross(nB);
+  } else {
+    it.tb2 = u2.normalized();
+    it.tb1 = nB.cross(it.tb2);
+  }
+  const double L = f.lengthScale;
+  const Vec3 gap = pB - pA;
+  const Vec3 normalSum = nA + nB;
+  const double overlap = -gap.dot(nA);
+  it.r << L * it.t1.dot(normalSum), L * it.t2.dot(normalSum), it.t1.dot(gap), it.t2.dot(gap);
+
+  const Vec3 tA[2] = {it.t1, it.t2};
+  const Vec3 tB[2] = {it.tb1, it.tb2};
+  for (int i = 0; i < 2; ++i) {
+    const Vec3 tiOnB = tA[i] - nB * nB.dot(tA[i]);  // P_B t_i
+    for (int j = 0; j < 2; ++j) {
+      const double kA = tA[i].dot(it.a.hessian * tA[j]) / it.a.gradientNorm;  // shape operator of A
+      const double kB = tiOnB.dot(it.b.hessian * tB[j]) / it.b.gradientNorm;  // shape operator of B
+      it.J(i, j) = L * kA;
+      it.J(i, j + 2) = L * kB;
+      // d(t_i.(pB - pA)): -t_i.t_j from moving pA, overlap*kA from the basis turning with nA.
+      it.J(i + 2, j) = (i == j ? -1.0 : 0.0) + overlap * kA;
+      it.J(i + 2, j + 2) = tA[i].dot(tB[j]);
+    }
+  }
+  it.norm = it.r.norm();
+  it.finite = it.r.allFinite() && it.J.allFinite();
+  return it;
+}
+
+/// Scales a tangent step so that it moves a point at most maxLength.
+Vec2 capped(const Vec2& step, double maxLength) {
+  const double n = step.norm();
+  return n > maxLength ? Vec2(step * (maxLength / n)) : step;
+}
+
+/// Packs a solved pair (points in A's body frame) into world-frame ContactGeometry.
+ContactGeometry finish(const PairFrame& f, const Pose& poseA, const Iterate& it, ContactStatus status, int iterations) {
+  ContactGeometry g;
+  g.status = status;
+  const Mat3 RA = poseA.rotation();
+  g.localPointA = it.a.point;
+  g.localPointB = f.toB(it.b.point);
+  g.pointA = poseA.toWorld(g.localPointA);
+  g.pointB = poseA.toWorld(it.b.point);
+  g.normal = RA * it.a.normal;
+  g.overlap = -(it.b.point - it.a.point).dot(it.a.normal);
+  g.curvatureA = principalCurvatures(it.a.gradient, it.a.hessian).rotated(RA);
+  g.curvatureB = principalCurvatures(it.b.gradient, it.b.hessian).rotated(RA);
+  g.iterations = iterations;
+  g.residual = it.norm;
+  return g;
+}
+
+ContactGeometry separated(double gapLowerBound) {
+  ContactGeometry g;
+  g.status = ContactStatus::Separated;
+  g.overlap = -std::max(gapLowerBound, 0.0);
+  return g;
+}
+
+ContactGeometry sphereSphere(const Superquadric& A, const Pose& poseA, const Superquadric& B,
+                             const Pose& poseB, const DetectorSettings& settings) {
+  const Vec3 d = poseB.position - poseA.position;
+  const double distance = d.norm();
+  const double rA = A.a(), rB = B.a();
+  if (distance - rA - rB > settings.cutoff) return separated(distance - rA - rB);
+  ContactGeometry g;
+  if (!(distance > 0.0)) {
+    g.status = ContactStatus::NonFinite;  // coincident centres: no normal
+    return g;
+  }
+  g.status = ContactStatus::Converged;
+  g.normal = d / distance;
+  g.overlap = rA + rB - distance;
+  g.pointA = poseA.position + rA * g.normal;
+  g.pointB = poseB.position - rB * g.normal;
+  g.localPointA = poseA.toBody(g.pointA);
+  g.localPointB = poseB.toBody(g.pointB);
+  g.curvatureA = PrincipalCurvatures::flat(g.normal);
+  g.curvatureA.k1 = g.curvatureA.k2 = 1.0 / rA;
+  g.curvatureB = PrincipalCurvatures::flat(-g.normal);
+  g.curvatureB.k1 = g.curvatureB.k2 = 1.0 / rB;
+  return g;
+}
+
+ContactGeometry solve(const Superquadric& A, const Pose& poseA, const Superquadric& B,
+                      const Pose& poseB, const DetectorSettings& settings,
+                      const ContactGeometry* previous) {
+  if (A.isSphere() && B.isSphere()) return sphereSphere(A, poseA, B, poseB, settings);
+
+  const Vec3 centres = poseB.position - poseA.position;
+  const double sphereGap = centres.norm() - A.boundingRadius() - B.boundingRadius();
+  if (sphereGap > settings.cutoff) return separated(sphereGap);
+  const OrientedBox boxA{poseA.position, poseA.rotation(), A.halfExtents()};
+  const OrientedBox boxB{poseB.position, poseB.rotation(), B.halfExtents()};
+  if (!boxesOverlap(boxA, boxB, 0.5 * settings.cutoff)) {
+    return separated(std::max(sphereGap, settings.cutoff));
+  }
+
+  const Mat3 RAt = poseA.rotation().transpose();
+  const PairFrame f{A, B, RAt * poseB.rotation(), RAt * centres,
+                    std::sqrt(A.volumeEquivalentRadius() * B.volumeEquivalentRadius())};
+
+  Vec3 pA, pB;
+  if (previous != nullptr && previous->converged()) {
+    pA = previous->localPointA;
+    pB = f.fromB(previous->localPointB);
+  } else {
+    const double distance = f.c.norm();
+    const Vec3 d = distance > 0.0 ? Vec3(f.c / distance) : Vec3::UnitX();
+    pA = A.supportPoint(d);
+    pB = f.fromB(B.supportPoint(f.R.transpose() * -d));
+  }
+
+  const double tolerance = settings.tolerance * f.lengthScale;
+  const double maxStepA = 0.5 * A.halfExtents().minCoeff();
+  const double maxStepB = 0.5 * B.halfExtents().minCoeff();
+  Iterate current = evaluate(f, pA, pB);
+  double damping = 0.0;
+  int iterations = 0;
+  ContactStatus status = ContactStatus::Converged;
+  for (;;) {
+    if (!current.finite) {
+      status = ContactStatus::NonFinite;
+      break;
+    }
+    if (current.norm <= tolerance) break;
+    if (iterations >= settings.maxIterations) {
+      status = ContactStatus::MaxIterations;
+      break;
+    }
+    // Levenberg-Marquardt step on the 4 tangent displacements.
+    const Mat4 normal = current.J.transpose() * current.J;
+    const Vec4 step = (normal + damping * Mat4::Identity()).ldlt().solve(-current.J.transpose() * current.r);
+    const Vec2 stepA = capped(step.head<2>(), maxStepA);
+    const Vec2 stepB = capped(step.tail<2>(), maxStepB);
+    const Vec3 yA = current.a.point + stepA.x() * current.t1 + stepA.y() * current.t2;
+    const Vec3 yB = current.b.point + stepB.x() * current.tb1 + stepB.y() * current.tb2;
+    const Iterate trial = evaluate(f, A.projectRadially(yA), f.fromB(B.projectRadially(f.toB(yB))));
+    ++iterations;
+    const double scale = normal.trace();
+    if (trial.finite && trial.norm < current.norm) {
+      current = trial;
+      damping = damping > 1e-12 * scale ? 0.25 * damping : 0.0;
+    } else {
+      damping = std::max(4.0 * damping, 1e-6 * scale);
+      if (damping > 1e12 * scale) {
+        status = ContactStatus::Stalled;
+        break;
+      }
+    }
+  }
+  if (status == ContactStatus::NonFinite) {
+    ContactGeometry g;
+    g.status = status;
+    g.iterations = iterations;
+    return g;
+  }
+  ContactGeometry g = finish(f, poseA, current, status, iterations);
+  if (g.converged()) {
+    const bool antiparallel = current.a.normal.dot(current.b.normal) < 0.0;
+    const bool facesB = current.a.normal.dot(f.c) >= 0.0;
+    if (!antiparallel || !facesB) {
+      g.status = ContactStatus::WrongBranch;
+    } else if (-g.overlap > settings.cutoff) {
+      g.status = ContactStatus::Separated;
+    }
+  }
+  return g;
+}
+
+}  // namespace
+
+ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const Superquadric& B,
+                              const Pose& poseB, const DetectorSettings& settings) {
+  return solve(A, poseA, B, poseB, settings, nullptr);
+}
+
+ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const Superquadric& B,
+                              const Pose& poseB, const DetectorSettings& settings,
+                              const ContactGeometry& previous) {
+  return solve(A, poseA, B, poseB, settings, &previous);
+}
+
+ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const Plane& wall,
+                              const DetectorSettings& settings) {
+  const Vec3 n = -wall.normal;
+  const Mat3 RA = poseA.rotation();
+  ContactGeometry g;
+  g.localPointA = A.supportPoint(RA.transpose() * n);
+  g.pointA = poseA.toWorld(g.localPointA);
+  g.overlap = (wall.point - g.pointA).dot(wall.normal);
+  if (-g.overlap > settings.cutoff) return separated(-g.overlap);
+  g.status = ContactStatus::Converged;
+  g.normal = n;
+  g.pointB = g.pointA + g.overlap * wall.normal;
+  g.localPointB = g.pointB;  // the wall's frame is the world frame
+  const GaugeDerivatives d = A.derivatives(g.localPointA);
+  g.curvatureA = principalCurvatures(d.gradient, d.hessian).rotated(RA);
+  g.curvatureB = PrincipalCurvatures::flat(wall.normal);
+  return g;
+}
+
+}  // namespace sqdem

@@ -1,0 +1,197 @@
+#include "sqdem/geometry/superquadric.hpp"
+
+#include <algorithm>
+#include <boost/math/special_functions/beta.hpp>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+namespace sqdem {
+namespace {
+
+/// The 2-D p-norm h(u, v) = (|u|^p + |v|^p)^(1/p) and its derivatives. With t = |.|/h:
+///   dh/du = sgn(u) t_u^(p-1),
+///   h d2h/du2 = (p-1) t_u^(p-2) t_v^p,   h d2h/dudv = -(p-1) sgn(u)sgn(v) t_u^(p-1) t_v^(p-1),
+/// i.e. second derivatives are returned multiplied by h, which keeps them bounded for p >= 2.
+/// powU = t_u^(p-2), powV = t_v^(p-2) are returned for the chain rule of the nested norm.
+struct NormDerivatives {
+  double h = 0.0, du = 0.0, dv = 0.0;
+  double hUU = 0.0, hUV = 0.0, hVV = 0.0;
+  double powU = 0.0, powV = 0.0;
+};
+
+double pNorm(double u, double v, double p) {
+  const double au = std::abs(u), av = std::abs(v);
+  const double m = std::max(au, av);
+  if (m == 0.0) return 0.0;
+  return m * std::pow(1.0 + std::pow(std::min(au, av) / m, p), 1.0 / p);
+}
+
+NormDerivatives pNormDerivatives(double u, double v, double p) {
+  NormDerivatives d;
+  d.h = pNorm(u, v, p);
+  if (d.h == 0.0) {
+    // Direction undefined at the origin; the p = 2 limit h*H = I - t t^T averages to the
+    // identity, for p > 2 the curvature term vanishes.
+    d.powU = d.powV = (p == 2.0) ? 1.0 : 0.0;
+    d.hUU = d.hVV = d.powU;
+    return d;
+  }
+  const double tu = std::abs(u) / d.h, tv = std::abs(v) / d.h;
+  d.powU = std::pow(tu, p - 2.0);  // pow(0, 0) = 1 for p = 2
+  d.powV = std::pow(tv, p - 2.0);
+  const double tu1 = d.powU * tu, tv1 = d.powV * tv;
+  d.du = std::copysign(tu1, u);
+  d.dv = std::copysign(tv1, v);
+  d.hUU = (p - 1.0) * d.powU * tv1 * tv;
+  d.hVV = (p - 1.0) * d.powV * tu1 * tu;
+  d.hUV = -(p - 1.0) * d.du * d.dv;
+  return d;
+}
+
+/// sgn(x) |x|^e
+double signedPow(double x, double e) { return std::copysign(std::pow(std::abs(x), e), x); }
+
+void requireInRange(const char* name, double value, double lo, double hi) {
+  if (!(std::isfinite(value) && value >= lo && value <= hi)) {
+    throw std::invalid_argument("superquadric parameter '" + std::string(name) + "' = " +
+                                std::to_string(value) + " is outside the allowed range [" +
+                                std::to_string(lo) + ", " + std::to_string(hi) + "]");
+  }
+}
+
+/// Largest |x| over the surface: dense sampling of one octant of the parametrisation, refined
+/// by a shrinking pattern search, with a small safety margin; never above the box corner.
+double computeBoundingRadius(const Superquadric& s) {
+  if (s.isEllipsoid()) return s.halfExtents().maxCoeff();
+  constexpr double halfPi = std::numbers::pi / 2.0;
+  constexpr int samples = 64;
+  double bestEta = 0.0, bestOmega = 0.0, best = 0.0;
+  for (int i = 0; i <= samples; ++i) {
+    for (int j = 0; j <= samples; ++j) {
+      const double eta = halfPi * i / samples, omega = halfPi * j / samples;
+      const double r2 = s.surfacePoint(eta, omega).squaredNorm();
+      if (r2 > best) best = r2, bestEta = eta, bestOmega = omega;
+    }
+  }
+  for (double step = halfPi / samples; step > 1e-12; step *= 0.5) {
+    for (bool improved = true; improved;) {
+      improved = false;
+      for (const auto& [de, dw] : {std::pair{step, 0.0}, {-step, 0.0}, {0.0, step}, {0.0, -step}}) {
+        const double eta = std::clamp(bestEta + de, 0.0, halfPi);
+        const double omega = std::clamp(bestOmega + dw, 0.0, halfPi);
+        const double r2 = s.surfacePoint(eta, omega).squaredNorm();
+        if (r2 > best) best = r2, bestEta = eta, bestOmega = omega, improved = true;
+      }
+    }
+  }
+  return std::min(std::sqrt(best) * (1.0 + 1e-9), s.halfExtents().norm());
+}
+
+}  // namespace
+
+Superquadric::Superquadric(double a, double b, double c, double n1, double n2)
+    : halfExtents_(a, b, c), n1_(n1), n2_(n2) {
+  constexpr double huge = 1e300;
+  requireInRange("a", a, 0.0, huge);
+  requireInRange("b", b, 0.0, huge);
+  requireInRange("c", c, 0.0, huge);
+  if (a == 0.0 || b == 0.0 || c == 0.0) {
+    throw std::invalid_argument("superquadric semi-axes a, b, c must be > 0");
+  }
+  requireInRange("n1", n1, 2.0, maxExponent);
+  requireInRange("n2", n2, 2.0, maxExponent);
+  boundingRadius_ = computeBoundingRadius(*this);
+  volumeEquivalentRadius_ = std::cbrt(3.0 * volume() / (4.0 * std::numbers::pi));
+}
+
+double Superquadric::gauge(const Vec3& x) const {
+  const Vec3 u = x.cwiseQuotient(halfExtents_);
+  if (isEllipsoid()) return u.norm();
+  return pNorm(pNorm(u.x(), u.y(), n2_), u.z(), n1_);
+}
+
+GaugeDerivatives Superquadric::derivatives(const Vec3& x) const {
+  const Vec3 u = x.cwiseQuotient(halfExtents_);
+  GaugeDerivatives out;
+  Vec3 gradU;
+  Mat3 hessU;
+  if (isEllipsoid()) {
+    const double g = u.norm();
+    if (g == 0.0) return out;
+    out.value = g;
+    gradU = u / g;
+    hessU = (Mat3::Identity() - gradU * gradU.transpose()) / g;
+  } else {
+    const NormDerivatives in = pNormDerivatives(u.x(), u.y(), n2_);     // s(u, v)
+    const NormDerivatives outer = pNormDerivatives(in.h, u.z(), n1_);  // g(s, w)
+    const double g = outer.h;
+    if (g == 0.0) return out;
+    out.value = g;
+    gradU = Vec3(outer.du * in.du, outer.du * in.dv, outer.dv);
+    // Chain rule g(s(u, v), w); every term carries 1/g, and g_s * s_ab = t_s^(n1-2) (s s_ab) / g.
+    const double sUU = outer.hUU * in.du * in.du + outer.powU * in.hUU;
+    const double sUV = outer.hUU * in.du * in.dv + outer.powU * in.hUV;
+    const double sVV = outer.hUU * in.dv * in.dv + outer.powU * in.hVV;
+    hessU << sUU, sUV, outer.hUV * in.du,  //
+        sUV, sVV, outer.hUV * in.dv,       //
+        outer.hUV * in.du, outer.hUV * in.dv, outer.hVV;
+    hessU /= g;
+  }
+  const Vec3 inv = halfExtents_.cwiseInverse();
+  out.gradient = gradU.cwiseProduct(inv);
+  out.hessian = inv.asDiagonal() * hessU * inv.asDiagonal();
+  return out;
+}
+
+Vec3 Superquadric::outwardNormal(const Vec3& x) const {
+  return derivatives(x).gradient.normalized();
+}
+
+Vec3 Superquadric::supportPoint(const Vec3& direction) const {
+  // Maximise d.x over g(x) <= 1: with u = x/a and d~ = a d, the dual of the nested
+  // (n2 inside n1) norm is the nested (q2 inside q1) norm, 1/q + 1/n = 1, and the maximiser
+  // component is sgn(d~_i) (|d~_i| / ||d~||_q)^(q-1).
+  const Vec3 d = direction.cwiseProduct(halfExtents_);
+  if (isEllipsoid()) return (d / d.norm()).cwiseProduct(halfExtents_);
+  const double e1 = 1.0 / (n1_ - 1.0), e2 = 1.0 / (n2_ - 1.0);  // q - 1
+  const double q1 = n1_ * e1, q2 = n2_ * e2;
+  const double dXY = pNorm(d.x(), d.y(), q2);
+  const double dAll = pNorm(dXY, d.z(), q1);
+  const double s = std::pow(dXY / dAll, e1);
+  const double w = signedPow(d.z() / dAll, e1);
+  const double ux = dXY > 0.0 ? signedPow(d.x() / dXY, e2) : 0.0;
+  const double uy = dXY > 0.0 ? signedPow(d.y() / dXY, e2) : 0.0;
+  return Vec3(a() * s * ux, b() * s * uy, c() * w);
+}
+
+Vec3 Superquadric::surfacePoint(double eta, double omega) const {
+  const double e1 = 2.0 / n1_, e2 = 2.0 / n2_;
+  const double ring = std::pow(std::abs(std::cos(eta)), e1);
+  return Vec3(a() * ring * signedPow(std::cos(omega), e2),
+              b() * ring * signedPow(std::sin(omega), e2), c() * signedPow(std::sin(eta), e1));
+}
+
+double Superquadric::volume() const {
+  using boost::math::beta;
+  const double e1 = 2.0 / n1_, e2 = 2.0 / n2_;
+  return 2.0 * a() * b() * c() * e1 * e2 * beta(e1 / 2.0 + 1.0, e1) * beta(e2 / 2.0, e2 / 2.0);
+}
+
+Vec3 Superquadric::secondMomentsOfVolume() const {
+  // Jaklic, Leonardis & Solina (2000), Appendix: moments of a superquadric in Beta functions.
+  using boost::math::beta;
+  const double e1 = 2.0 / n1_, e2 = 2.0 / n2_;
+  const double abc = a() * b() * c();
+  const double planar = 0.5 * abc * e1 * e2 * beta(1.5 * e2, 0.5 * e2) * beta(0.5 * e1, 2.0 * e1 + 1.0);
+  const double axial = 2.0 * abc * e1 * e2 * beta(0.5 * e2, 0.5 * e2 + 1.0) * beta(1.5 * e1, e1 + 1.0);
+  return Vec3(planar * a() * a(), planar * b() * b(), axial * c() * c());
+}
+
+Vec3 Superquadric::principalMomentsOfInertia(double density) const {
+  const Vec3 m = density * secondMomentsOfVolume();
+  return Vec3(m.y() + m.z(), m.x() + m.z(), m.x() + m.y());
+}
+
+}  // namespace sqdem

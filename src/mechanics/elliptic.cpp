@@ -1,0 +1,168 @@
+#include "sqdem/mechanics/elliptic.hpp"
+
+#include <algorithm>
+#include <array>
+#include <boost/math/special_functions/ellint_rd.hpp>
+#include <boost/math/special_functions/ellint_rf.hpp>
+#include <boost/math/tools/roots.hpp>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <vector>
+
+namespace sqdem {
+namespace {
+
+/// Complete elliptic integrals K(m), E(m) of parameter m = e^2 through Carlson's symmetric forms,
+/// which take the complementary parameter 1 - m directly (accurate as m -> 1).
+struct CompleteEllipticIntegrals {
+  double K, E;
+};
+CompleteEllipticIntegrals completeEllipticIntegrals(double m, double oneMinusM) {
+  const double K = boost::math::ellint_rf(0.0, oneMinusM, 1.0);
+  const double E = K - m / 3.0 * boost::math::ellint_rd(0.0, oneMinusM, 1.0);
+  return {K, E};
+}
+
+double capRadius(double inverseRadius, double cap) {
+  return inverseRadius > 1.0 / cap ? 1.0 / inverseRadius : cap;
+}
+
+/// Eq. 13 tabulated on a uniform grid in u = ln(Ri/Rj), cubic (4-point Lagrange) interpolation.
+class EccentricityTable {
+ public:
+  static constexpr double minRatio = 1e-8;
+  static constexpr int intervals = 1024;
+
+  EccentricityTable() : uMin_(std::log(minRatio)), step_(-uMin_ / intervals) {
+    values_.resize(intervals + 1);
+    for (int k = 0; k <= intervals; ++k) {
+      values_[k] = eccentricitySquaredExact(std::exp(uMin_ + k * step_));
+    }
+  }
+
+  double operator()(double ratio) const {
+    const double x = (std::log(ratio) - uMin_) / step_;
+    const int k = std::clamp(static_cast<int>(x) - 1, 0, intervals - 3);
+    const double s = x - k;  // position relative to node k, in [1, 2] inside the grid
+    const double* y = &values_[k];
+    const double l0 = -(s - 1) * (s - 2) * (s - 3) / 6.0, l1 = s * (s - 2) * (s - 3) / 2.0;
+    const double l2 = -s * (s - 1) * (s - 3) / 2.0, l3 = s * (s - 1) * (s - 2) / 6.0;
+    return std::max(0.0, l0 * y[0] + l1 * y[1] + l2 * y[2] + l3 * y[3]);
+  }
+
+ private:
+  double uMin_, step_;
+  std::vector<double> values_;
+};
+
+void requireRatio(double ratio) {
+  if (!(ratio > 0.0 && ratio <= 1.0)) {
+    throw std::invalid_argument("elliptic contact: Ri/Rj must be in (0, 1], got " +
+                                std::to_string(ratio));
+  }
+}
+
+}  // namespace
+
+RelativeRadii relativeRadii(const PrincipalCurvatures& A, const PrincipalCurvatures& B,
+                            double radiusCap) {
+  const double cosOmega = std::min(1.0, std::abs(A.d1.dot(B.d1)));
+  const double cos2Omega = 2.0 * cosOmega * cosOmega - 1.0;
+  const double sum = A.k1 + A.k2 + B.k1 + B.k2;
+  const double dA = A.k1 - A.k2, dB = B.k1 - B.k2;
+  const double root = std::sqrt(std::max(0.0, dA * dA + dB * dB + 2.0 * dA * dB * cos2Omega));
+  RelativeRadii r;
+  r.omega = std::acos(cosOmega);
+  r.Ri = capRadius(0.5 * (sum + root), radiusCap);
+  r.Rj = capRadius(0.5 * (sum - root), radiusCap);
+  r.Rc = r.Ri * r.Rj / (r.Ri + r.Rj);
+  return r;
+}
+
+double eccentricitySquaredExact(double ratio) {
+  requireRatio(ratio);
+  if (ratio == 1.0) return 0.0;
+  // psi(x) = ratio E / ((ratio + 1) K - E) - (1 - x), x = e^2 (Eq. 13 rearranged). x = 0 and
+  // x = 1 are spurious roots; psi < 0 just above 0 and psi > 0 just below 1.
+  const auto psi = [ratio](double x) {
+    const double t = 1.0 - x;
+    const auto [K, E] = completeEllipticIntegrals(x, t);
+    return ratio * E / ((ratio + 1.0) * K - E) - t;
+  };
+  double lo = 1e-3 * (1.0 - ratio);
+  double hi = 1.0 - std::pow(ratio, 4.0 / 3.0) / 16.0;
+  while (psi(lo) >= 0.0 && lo > 1e-300) lo *= 1e-3;
+  while (psi(hi) <= 0.0 && hi < 1.0) hi = 1.0 - (1.0 - hi) * 1e-2;
+  std::uintmax_t maxIterations = 200;
+  const auto [a, b] = boost::math::tools::toms748_solve(
+      psi, lo, hi, boost::math::tools::eps_tolerance<double>(52), maxIterations);
+  return 0.5 * (a + b);
+}
+
+double eccentricitySquaredExplicit(double ratio) {
+  requireRatio(ratio);
+  const double braces = -0.177 + std::sqrt(0.5 / ratio * std::log(16.0 / ratio)) + 0.16 * std::log(ratio);
+  return std::clamp(1.0 - 1.0 / (braces * braces), 0.0, 1.0);
+}
+
+double eccentricitySquaredTabulated(double ratio) {
+  requireRatio(ratio);
+  if (ratio < EccentricityTable::minRatio) return eccentricitySquaredExact(ratio);
+  static const EccentricityTable table;
+  return table(ratio);
+}
+
+double eccentricitySquared(double ratio, EccentricityMethod method) {
+  switch (method) {
+    case EccentricityMethod::Exact: return eccentricitySquaredExact(ratio);
+    case EccentricityMethod::Explicit: return eccentricitySquaredExplicit(ratio);
+    case EccentricityMethod::Tabulated: return eccentricitySquaredTabulated(ratio);
+  }
+  return eccentricitySquaredExact(ratio);
+}
+
+HertzFactors hertzFactorsFromEccentricity(double e2) {
+  const double t = 1.0 - e2;
+  const auto [K, E] = completeEllipticIntegrals(e2, t);
+  HertzFactors h;
+  h.e2 = e2;
+  h.gamma = std::numbers::pi * std::numbers::sqrt2 * std::sqrt(E) / (2.0 * K * std::sqrt(K * t));
+  h.beta = 2.0 * E / (K * std::sqrt(t));
+  return h;
+}
+
+HertzFactors hertzFactors(double ratio, EccentricityMethod method) {
+  return hertzFactorsFromEccentricity(eccentricitySquared(ratio, method));
+}
+
+double ellipticHertzForce(double effectiveModulus, double Rc, double overlap, double gamma) {
+  return overlap > 0.0 ? 4.0 / 3.0 * effectiveModulus * std::sqrt(Rc) * overlap * std::sqrt(overlap) * gamma
+                       : 0.0;
+}
+
+double ellipticHertzArea(double Rc, double overlap, double beta) {
+  return overlap > 0.0 ? std::numbers::pi * Rc * overlap * beta : 0.0;
+}
+
+BeckerFactors beckerFactors(const RelativeRadii& radii) {
+  BeckerFactors f;
+  f.A = 0.5 / radii.Rj;
+  f.B = 0.5 / radii.Ri;
+  f.Re = 0.5 / std::sqrt(f.A * f.B);
+  const double ratio = f.B / f.A;
+  f.f1 = 1.0 - std::pow(std::pow(ratio, 0.0602) - 1.0, 1.456);
+  f.f2 = 1.0 - std::pow(std::pow(ratio, 0.0684) - 1.0, 1.531);
+  return f;
+}
+
+double beckerHertzForce(double effectiveModulus, const BeckerFactors& f, double overlap) {
+  return overlap > 0.0 ? 4.0 / 3.0 * effectiveModulus * std::sqrt(f.Re) * std::pow(overlap / f.f2, 1.5)
+                       : 0.0;
+}
+
+double effectiveModulus(double youngsA, double poissonA, double youngsB, double poissonB) {
+  return 1.0 / ((1.0 - poissonA * poissonA) / youngsA + (1.0 - poissonB * poissonB) / youngsB);
+}
+
+}  // namespace sqdem
