@@ -3,6 +3,7 @@
 #include <Eigen/Cholesky>
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 #include "sqdem/geometry/oriented_box.hpp"
 
@@ -95,6 +96,58 @@ Iterate evaluate(const PairFrame& f, const Vec3& pA, const Vec3& pB) {
   return it;
 }
 
+/// Support points of A along n and of B along -n (A's frame) and the support gap
+/// h_A(n) + h_B(-n) = n.(pA - pB): the support function of the Minkowski difference A - B,
+/// whose minimum over unit n is the overlap (or minus the distance) of the pair.
+struct SupportPair {
+  Vec3 normal, pointA, pointB;
+  double gap = 0.0;
+  int iterations = 0;
+};
+
+SupportPair supportPair(const PairFrame& f, const Vec3& n) {
+  SupportPair s{n, f.A.supportPoint(n), f.fromB(f.B.supportPoint(f.R.transpose() * -n)), 0.0, 0};
+  s.gap = n.dot(s.pointA - s.pointB);
+  return s;
+}
+
+/// Initial guess: descends the support gap over the unit sphere from startNormal (gradient P (pA - pB), step 1/(rA + rB) as for two spheres, backtracking). This lands in the
+/// basin of the least-penetration common normal; the Newton solve then polishes it.
+SupportPair minimiseSupportGap(const PairFrame& f, const Vec3& startNormal) {
+  constexpr int maxIterations = 40;
+  SupportPair best = supportPair(f, startNormal);
+  double step = 1.0 / (f.A.boundingRadius() + f.B.boundingRadius());
+  const double tolerance = 1e-3 * f.lengthScale;
+  int iterations = 0;
+  while (iterations < maxIterations) {
+    const Vec3 d = best.pointA - best.pointB;
+    const Vec3 gradient = d - best.normal * best.normal.dot(d);
+    if (gradient.norm() < tolerance) break;
+    ++iterations;
+    const SupportPair trial = supportPair(f, (best.normal - step * gradient).normalized());
+    if (trial.gap < best.gap) {
+      best = trial;
+      step *= 1.5;
+    } else {
+      step *= 0.3;
+    }
+  }
+  best.iterations = iterations;
+  return best;
+}
+
+/// Least-squares solution of [J; sqrt(damping) I] step = [-r; 0] by column-pivoted QR, which
+/// does not square J's condition number (large where the relative curvature nearly vanishes,
+/// as in flat-on-flat contacts) and returns the minimum-norm-like basic step when J is singular.
+Vec4 dampedStep(const Iterate& it, double damping) {
+  if (damping == 0.0) return it.J.colPivHouseholderQr().solve(-it.r);
+  Eigen::Matrix<double, 8, 4> augmented;
+  augmented << it.J, std::sqrt(damping) * Mat4::Identity();
+  Eigen::Matrix<double, 8, 1> rhs;
+  rhs << -it.r, Vec4::Zero();
+  return augmented.colPivHouseholderQr().solve(rhs);
+}
+
 /// Scales a tangent step so that it moves a point at most maxLength.
 Vec2 capped(const Vec2& step, double maxLength) {
   const double n = step.norm();
@@ -151,43 +204,25 @@ ContactGeometry sphereSphere(const Superquadric& A, const Pose& poseA, const Sup
   return g;
 }
 
-ContactGeometry solve(const Superquadric& A, const Pose& poseA, const Superquadric& B,
-                      const Pose& poseB, const DetectorSettings& settings,
-                      const ContactGeometry* previous) {
-  if (A.isSphere() && B.isSphere()) return sphereSphere(A, poseA, B, poseB, settings);
-
-  const Vec3 centres = poseB.position - poseA.position;
-  const double sphereGap = centres.norm() - A.boundingRadius() - B.boundingRadius();
-  if (sphereGap > settings.cutoff) return separated(sphereGap);
-  const OrientedBox boxA{poseA.position, poseA.rotation(), A.halfExtents()};
-  const OrientedBox boxB{poseB.position, poseB.rotation(), B.halfExtents()};
-  if (!boxesOverlap(boxA, boxB, 0.5 * settings.cutoff)) {
-    return separated(std::max(sphereGap, settings.cutoff));
-  }
-
-  const Mat3 RAt = poseA.rotation().transpose();
-  const PairFrame f{A, B, RAt * poseB.rotation(), RAt * centres,
-                    std::sqrt(A.volumeEquivalentRadius() * B.volumeEquivalentRadius())};
-
-  Vec3 pA, pB;
-  if (previous != nullptr && previous->converged()) {
-    pA = previous->localPointA;
-    pB = f.fromB(previous->localPointB);
-  } else {
-    const double distance = f.c.norm();
-    const Vec3 d = distance > 0.0 ? Vec3(f.c / distance) : Vec3::UnitX();
-    pA = A.supportPoint(d);
-    pB = f.fromB(B.supportPoint(f.R.transpose() * -d));
-  }
+/// Safeguarded Gauss-Newton on the common-normal residual from surface points pA, pB (A's frame).
+ContactGeometry newtonSolve(const PairFrame& f, const Pose& poseA, const Vec3& pA, const Vec3& pB,
+                            int iterations, const DetectorSettings& settings) {
+  const Superquadric& A = f.A;
+  const Superquadric& B = f.B;
 
   const double tolerance = settings.tolerance * f.lengthScale;
   const double maxStepA = 0.5 * A.halfExtents().minCoeff();
   const double maxStepB = 0.5 * B.halfExtents().minCoeff();
   Iterate current = evaluate(f, pA, pB);
-  double damping = 0.0;
-  int iterations = 0;
   ContactStatus status = ContactStatus::Converged;
-  for (;;) {
+  // Safeguarded Gauss-Newton: the full step, then halved steps (nearly singular, flat
+  // directions overshoot), then Levenberg-Marquardt steps of growing damping (far from the
+  // solution); the first trial that lowers |r| is taken.
+  constexpr int halvings = 4;
+  constexpr double dampings[] = {1e-6, 1e-4, 1e-2, 1.0, 1e2, 1e4};
+  constexpr int attempts = halvings + static_cast<int>(std::size(dampings));
+  Vec4 newton = Vec4::Zero();
+  for (int attempt = 0;;) {
     if (!current.finite) {
       status = ContactStatus::NonFinite;
       break;
@@ -197,25 +232,24 @@ ContactGeometry solve(const Superquadric& A, const Pose& poseA, const Superquadr
       status = ContactStatus::MaxIterations;
       break;
     }
-    // Levenberg-Marquardt step on the 4 tangent displacements.
-    const Mat4 normal = current.J.transpose() * current.J;
-    const Vec4 step = (normal + damping * Mat4::Identity()).ldlt().solve(-current.J.transpose() * current.r);
+    if (attempt == attempts) {
+      status = ContactStatus::Stalled;
+      break;
+    }
+    if (attempt == 0) newton = dampedStep(current, 0.0);
+    const Vec4 step = attempt < halvings ? Vec4(std::ldexp(1.0, -attempt) * newton)
+                                         : dampedStep(current, dampings[attempt - halvings]);
     const Vec2 stepA = capped(step.head<2>(), maxStepA);
     const Vec2 stepB = capped(step.tail<2>(), maxStepB);
     const Vec3 yA = current.a.point + stepA.x() * current.t1 + stepA.y() * current.t2;
     const Vec3 yB = current.b.point + stepB.x() * current.tb1 + stepB.y() * current.tb2;
     const Iterate trial = evaluate(f, A.projectRadially(yA), f.fromB(B.projectRadially(f.toB(yB))));
     ++iterations;
-    const double scale = normal.trace();
     if (trial.finite && trial.norm < current.norm) {
       current = trial;
-      damping = damping > 1e-12 * scale ? 0.25 * damping : 0.0;
+      attempt = 0;
     } else {
-      damping = std::max(4.0 * damping, 1e-6 * scale);
-      if (damping > 1e12 * scale) {
-        status = ContactStatus::Stalled;
-        break;
-      }
+      ++attempt;
     }
   }
   if (status == ContactStatus::NonFinite) {
@@ -235,6 +269,42 @@ ContactGeometry solve(const Superquadric& A, const Pose& poseA, const Superquadr
     }
   }
   return g;
+}
+
+/// Warm-start budget before falling back to the support-gap descent.
+constexpr int warmIterationBudget = 8;
+
+ContactGeometry solve(const Superquadric& A, const Pose& poseA, const Superquadric& B,
+                      const Pose& poseB, const DetectorSettings& settings,
+                      const ContactGeometry* previous) {
+  if (A.isSphere() && B.isSphere()) return sphereSphere(A, poseA, B, poseB, settings);
+
+  const Vec3 centres = poseB.position - poseA.position;
+  const double sphereGap = centres.norm() - A.boundingRadius() - B.boundingRadius();
+  if (sphereGap > settings.cutoff) return separated(sphereGap);
+  const OrientedBox boxA{poseA.position, poseA.rotation(), A.halfExtents()};
+  const OrientedBox boxB{poseB.position, poseB.rotation(), B.halfExtents()};
+  if (!boxesOverlap(boxA, boxB, 0.5 * settings.cutoff)) {
+    return separated(std::max(sphereGap, settings.cutoff));
+  }
+
+  const Mat3 RAt = poseA.rotation().transpose();
+  const PairFrame f{A, B, RAt * poseB.rotation(), RAt * centres,
+                    std::sqrt(A.volumeEquivalentRadius() * B.volumeEquivalentRadius())};
+
+  if (previous != nullptr && previous->converged()) {
+    // Warm: Newton from the previous points; if that does not settle quickly (a contact that
+    // jumps across a flat face), descend the support gap from the previous normal instead.
+    DetectorSettings quick = settings;
+    quick.maxIterations = std::min(settings.maxIterations, warmIterationBudget);
+    ContactGeometry g = newtonSolve(f, poseA, previous->localPointA, f.fromB(previous->localPointB), 0, quick);
+    if (g.status == ContactStatus::Converged || g.status == ContactStatus::Separated) return g;
+    const SupportPair guess = minimiseSupportGap(f, A.outwardNormal(previous->localPointA));
+    return newtonSolve(f, poseA, guess.pointA, guess.pointB, g.iterations + guess.iterations, settings);
+  }
+  const double distance = f.c.norm();
+  const SupportPair guess = minimiseSupportGap(f, distance > 0.0 ? Vec3(f.c / distance) : Vec3::UnitX());
+  return newtonSolve(f, poseA, guess.pointA, guess.pointB, guess.iterations, settings);
 }
 
 }  // namespace

@@ -66,7 +66,7 @@ void requireInRange(const char* name, double value, double lo, double hi) {
 double computeBoundingRadius(const Superquadric& s) {
   if (s.isEllipsoid()) return s.halfExtents().maxCoeff();
   constexpr double halfPi = std::numbers::pi / 2.0;
-  constexpr int samples = 64;
+  constexpr int samples = 16;
   double bestEta = 0.0, bestOmega = 0.0, best = 0.0;
   for (int i = 0; i <= samples; ++i) {
     for (int j = 0; j <= samples; ++j) {
