@@ -14,6 +14,10 @@
 // so x / g(x) is the radial projection of x onto the surface, g - 1 is a well-scaled implicit
 // function for any n (no |x|^20 under- or overflow), and its gradient and Hessian stay finite
 // on and near the coordinate planes. All functions take body-frame coordinates.
+//
+// Smoothness: the surface is C2 everywhere except at the poles (0, 0, +-c) when n1 = 2 < n2,
+// where the second derivatives are bounded but depend on the direction of approach (the
+// x-y section is not round); curvatures there are those of the limit along the x or y axis.
 
 #include "sqdem/math/types.hpp"
 
