@@ -113,11 +113,11 @@ SupportPair supportPair(const PairFrame& f, const Vec3& n) {
 
 /// Initial guess: descends the support gap over the unit sphere from startNormal (gradient P (pA - pB), step 1/(rA + rB) as for two spheres, backtracking). This lands in the
 /// basin of the least-penetration common normal; the Newton solve then polishes it.
-SupportPair minimiseSupportGap(const PairFrame& f, const Vec3& startNormal) {
-  constexpr int maxIterations = 40;
+SupportPair minimiseSupportGap(const PairFrame& f, const Vec3& startNormal,
+                               double relativeTolerance = 1e-3, int maxIterations = 40) {
   SupportPair best = supportPair(f, startNormal);
   double step = 1.0 / (f.A.boundingRadius() + f.B.boundingRadius());
-  const double tolerance = 1e-3 * f.lengthScale;
+  const double tolerance = relativeTolerance * f.lengthScale;
   int iterations = 0;
   while (iterations < maxIterations) {
     const Vec3 d = best.pointA - best.pointB;
@@ -204,9 +204,10 @@ ContactGeometry sphereSphere(const Superquadric& A, const Pose& poseA, const Sup
   return g;
 }
 
-/// Safeguarded Gauss-Newton on the common-normal residual from surface points pA, pB (A's frame).
+/// Safeguarded Gauss-Newton on the common-normal residual from surface points pA, pB (A's frame),
+/// with its own budget of settings.maxIterations; earlierIterations are added to the count.
 ContactGeometry newtonSolve(const PairFrame& f, const Pose& poseA, const Vec3& pA, const Vec3& pB,
-                            int iterations, const DetectorSettings& settings) {
+                            int earlierIterations, const DetectorSettings& settings) {
   const Superquadric& A = f.A;
   const Superquadric& B = f.B;
 
@@ -222,6 +223,7 @@ ContactGeometry newtonSolve(const PairFrame& f, const Pose& poseA, const Vec3& p
   constexpr double dampings[] = {1e-6, 1e-4, 1e-2, 1.0, 1e2, 1e4};
   constexpr int attempts = halvings + static_cast<int>(std::size(dampings));
   Vec4 newton = Vec4::Zero();
+  int iterations = 0;
   for (int attempt = 0;;) {
     if (!current.finite) {
       status = ContactStatus::NonFinite;
@@ -255,10 +257,10 @@ ContactGeometry newtonSolve(const PairFrame& f, const Pose& poseA, const Vec3& p
   if (status == ContactStatus::NonFinite) {
     ContactGeometry g;
     g.status = status;
-    g.iterations = iterations;
+    g.iterations = earlierIterations + iterations;
     return g;
   }
-  ContactGeometry g = finish(f, poseA, current, status, iterations);
+  ContactGeometry g = finish(f, poseA, current, status, earlierIterations + iterations);
   if (g.converged()) {
     const bool antiparallel = current.a.normal.dot(current.b.normal) < 0.0;
     const bool facesB = current.a.normal.dot(f.c) >= 0.0;
@@ -304,7 +306,12 @@ ContactGeometry solve(const Superquadric& A, const Pose& poseA, const Superquadr
   }
   const double distance = f.c.norm();
   const SupportPair guess = minimiseSupportGap(f, distance > 0.0 ? Vec3(f.c / distance) : Vec3::UnitX());
-  return newtonSolve(f, poseA, guess.pointA, guess.pointB, guess.iterations, settings);
+  const ContactGeometry g = newtonSolve(f, poseA, guess.pointA, guess.pointB, guess.iterations, settings);
+  if (g.converged() || g.status == ContactStatus::Separated) return g;
+  // Deep overlaps: the Newton basin is narrower, so descend the support gap much further (its
+  // minimum is itself a common-normal pair) before the second Newton attempt.
+  const SupportPair closer = minimiseSupportGap(f, guess.normal, 1e-7, 400);
+  return newtonSolve(f, poseA, closer.pointA, closer.pointB, g.iterations + closer.iterations, settings);
 }
 
 }  // namespace
