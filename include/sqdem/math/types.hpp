@@ -1,6 +1,8 @@
 #pragma once
 // Small fixed-size linear algebra used everywhere in sqdem (Eigen, double precision).
 
+#include <cmath>
+
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
