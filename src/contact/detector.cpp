@@ -1,6 +1,6 @@
 #include "sqdem/contact/detector.hpp"
 
-#include <Eigen/Cholesky>
+#include <Eigen/QR>
 #include <algorithm>
 #include <cmath>
 #include <iterator>

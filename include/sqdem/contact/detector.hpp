@@ -7,10 +7,12 @@
 // Each point lives on its own surface (moved along its tangent plane, then projected radially
 // with the gauge, see superquadric.hpp), so the unknowns are two tangent displacements per body
 // and the residual is the 4-vector (L t.(nA + nB), t.(pB - pA)) in a tangent basis t of nA,
-// L = sqrt(R_vol,A R_vol,B). It is solved by Gauss-Newton with Levenberg-Marquardt damping and
-// a step cap (safeguarded Newton); the Jacobian uses the surfaces' shape operators, so it stays
-// finite on flat faces and only loses rank where the relative curvature does (line contacts),
-// where the damping picks the minimum-norm step.
+// L = sqrt(R_vol,A R_vol,B). It is solved by a safeguarded Gauss-Newton iteration (full step,
+// halved steps, then Levenberg-Marquardt damping; a step cap); the Jacobian uses the surfaces'
+// shape operators, so it stays finite on flat faces and only loses rank where the relative
+// curvature does (line and plane contacts), which a column-pivoted QR solve tolerates.
+// Cold starts first descend the support gap h_A(n) + h_B(-n) over the unit sphere (its minimum
+// is the least-penetration common normal); warm starts begin at the previous points.
 //
 // Closed forms: sphere-sphere, and every superquadric-plane pair (support map).
 // Before any iteration, pairs further apart than the cut-off are culled by bounding spheres and
@@ -32,7 +34,7 @@ struct DetectorSettings {
   int maxIterations = 100;
 };
 
-/// Cold solve: the initial guess is the pair of support points along the line of centres.
+/// Cold solve: the initial guess descends the support gap from the line of centres.
 ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const Superquadric& B,
                               const Pose& poseB, const DetectorSettings& settings = {});
 
