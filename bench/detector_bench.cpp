@@ -34,7 +34,7 @@ std::vector<Case> makeCases(Family family) {
     } else if (family == Family::Superquadric6 && p.A.isEllipsoid()) {
       continue;  // the generator draws 20 % ellipsoids
     }
-    const double L = std::sqrt(p.A.volumeEquivalentRadius() * p.B.volumeEquivalentRadius());
+    const double L = referenceVolumeRadius(p.A, p.B);
     Pose moved = p.poseB;
     moved.orientation = Quat(Eigen::AngleAxisd(1e-5, gen.randomUnit())) * moved.orientation;
     moved.position += 1e-6 * L * gen.randomUnit();

@@ -41,7 +41,7 @@ TEST(Detector, SwappingBodiesGivesSameOverlapAndOppositeNormal) {
   testing::PairGenerator gen(99);
   for (int k = 0; k < 300; ++k) {
     const testing::PlantedPair p = gen.next();
-    const double L = std::sqrt(p.A.volumeEquivalentRadius() * p.B.volumeEquivalentRadius());
+    const double L = referenceVolumeRadius(p.A, p.B);
     const ContactGeometry ab = detectContact(p.A, p.poseA, p.B, p.poseB);
     const ContactGeometry ba = detectContact(p.B, p.poseB, p.A, p.poseA);
     ASSERT_TRUE(ab.converged() && ba.converged());
@@ -59,7 +59,7 @@ TEST(Detector, RigidMotionOfThePairChangesNothing) {
   testing::PairGenerator gen(5);
   for (int k = 0; k < 300; ++k) {
     const testing::PlantedPair p = gen.next();
-    const double L = std::sqrt(p.A.volumeEquivalentRadius() * p.B.volumeEquivalentRadius());
+    const double L = referenceVolumeRadius(p.A, p.B);
     const Quat q = gen.randomRotation();
     const Vec3 t(1e3, -2e3, 5e2);
     const auto move = [&](const Pose& pose) { return Pose{q * pose.position + t, q * pose.orientation}; };
@@ -130,7 +130,7 @@ TEST(Detector, WarmStartAfterSmallMotionNeedsAtMostTwoIterations) {
   for (int k = 0; k < 500; ++k) {
     const testing::PlantedPair p = gen.next();
     if (p.kind == testing::PairKind::FaceOnFace) continue;
-    const double L = std::sqrt(p.A.volumeEquivalentRadius() * p.B.volumeEquivalentRadius());
+    const double L = referenceVolumeRadius(p.A, p.B);
     s.cutoff = 0.1 * L;
     const ContactGeometry g = detectContact(p.A, p.poseA, p.B, p.poseB, s);
     Pose moved = p.poseB;  // a DEM-like step: 1e-5 rad and 1e-6 L

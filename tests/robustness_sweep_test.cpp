@@ -55,7 +55,7 @@ TEST(RobustnessSweep, RandomSuperquadricPairs) {
   long statusCounts[6] = {};
   for (long k = 0; k < pairs; ++k) {
     const testing::PlantedPair p = generator.next();
-    const double L = std::sqrt(p.A.volumeEquivalentRadius() * p.B.volumeEquivalentRadius());
+    const double L = referenceVolumeRadius(p.A, p.B);
     settings.cutoff = 0.05 * L;  // the warm-start motion may open a small gap
     const ContactGeometry g = detectContact(p.A, p.poseA, p.B, p.poseB, settings);
     cold.add(g);

@@ -135,7 +135,7 @@ json probe(const json& input) {
   out["iterations"] = g.iterations;
   out["residual"] = g.residual;
   out["overlap"] = g.overlap;
-  const double RvolRef = std::sqrt(A.shape.volumeEquivalentRadius() * B.shape.volumeEquivalentRadius());
+  const double RvolRef = referenceVolumeRadius(A.shape, B.shape);
   out["R_vol_ref"] = RvolRef;
   if (!g.converged()) return out;
 

@@ -111,8 +111,9 @@ SupportPair supportPair(const PairFrame& f, const Vec3& n) {
   return s;
 }
 
-/// Initial guess: descends the support gap over the unit sphere from startNormal (gradient P (pA - pB), step 1/(rA + rB) as for two spheres, backtracking). This lands in the
-/// basin of the least-penetration common normal; the Newton solve then polishes it.
+/// Initial guess: descends the support gap over the unit sphere from startNormal (gradient
+/// P (pA - pB), step 1/(rA + rB) as for two spheres, backtracking). This lands in the basin of
+/// the least-penetration common normal; the Newton solve then polishes it.
 SupportPair minimiseSupportGap(const PairFrame& f, const Vec3& startNormal,
                                double relativeTolerance = 1e-3, int maxIterations = 40) {
   SupportPair best = supportPair(f, startNormal);
@@ -276,6 +277,11 @@ ContactGeometry newtonSolve(const PairFrame& f, const Pose& poseA, const Vec3& p
 /// Warm-start budget before falling back to the support-gap descent.
 constexpr int warmIterationBudget = 8;
 
+/// A solve that found the pair's common normal (touching, or separated by its gap).
+bool settled(const ContactGeometry& g) {
+  return g.status == ContactStatus::Converged || g.status == ContactStatus::Separated;
+}
+
 ContactGeometry solve(const Superquadric& A, const Pose& poseA, const Superquadric& B,
                       const Pose& poseB, const DetectorSettings& settings,
                       const ContactGeometry* previous) {
@@ -292,7 +298,7 @@ ContactGeometry solve(const Superquadric& A, const Pose& poseA, const Superquadr
 
   const Mat3 RAt = poseA.rotation().transpose();
   const PairFrame f{A, B, RAt * poseB.rotation(), RAt * centres,
-                    std::sqrt(A.volumeEquivalentRadius() * B.volumeEquivalentRadius())};
+                    referenceVolumeRadius(A, B)};
 
   if (previous != nullptr && previous->converged()) {
     // Warm: Newton from the previous points; if that does not settle quickly (a contact that
@@ -300,14 +306,14 @@ ContactGeometry solve(const Superquadric& A, const Pose& poseA, const Superquadr
     DetectorSettings quick = settings;
     quick.maxIterations = std::min(settings.maxIterations, warmIterationBudget);
     ContactGeometry g = newtonSolve(f, poseA, previous->localPointA, f.fromB(previous->localPointB), 0, quick);
-    if (g.status == ContactStatus::Converged || g.status == ContactStatus::Separated) return g;
+    if (settled(g)) return g;
     const SupportPair guess = minimiseSupportGap(f, A.outwardNormal(previous->localPointA));
     return newtonSolve(f, poseA, guess.pointA, guess.pointB, g.iterations + guess.iterations, settings);
   }
   const double distance = f.c.norm();
   const SupportPair guess = minimiseSupportGap(f, distance > 0.0 ? Vec3(f.c / distance) : Vec3::UnitX());
   const ContactGeometry g = newtonSolve(f, poseA, guess.pointA, guess.pointB, guess.iterations, settings);
-  if (g.converged() || g.status == ContactStatus::Separated) return g;
+  if (settled(g)) return g;
   // Deep overlaps: the Newton basin is narrower, so descend the support gap much further (its
   // minimum is itself a common-normal pair) before the second Newton attempt.
   const SupportPair closer = minimiseSupportGap(f, guess.normal, 1e-7, 400);

@@ -85,7 +85,7 @@ struct PairGenerator {
         break;
       }
     }
-    const double L = std::sqrt(p.A.volumeEquivalentRadius() * p.B.volumeEquivalentRadius());
+    const double L = referenceVolumeRadius(p.A, p.B);
     p.overlap = L * std::pow(10.0, uniform(std::log10(minOverlap), std::log10(maxOverlap)));
     const Vec3 pA = p.poseA.toWorld(p.A.supportPoint(p.poseA.orientation.conjugate() * p.normal));
     const Vec3 pBLocal = p.B.supportPoint(p.poseB.orientation.conjugate() * -p.normal);

@@ -19,6 +19,8 @@
 // where the second derivatives are bounded but depend on the direction of approach (the
 // x-y section is not round); curvatures there are those of the limit along the x or y axis.
 
+#include <cmath>
+
 #include "sqdem/math/types.hpp"
 
 namespace sqdem {
@@ -89,5 +91,11 @@ class Superquadric {
   double boundingRadius_ = 0.0;
   double volumeEquivalentRadius_ = 0.0;
 };
+
+/// R_vol_ref = sqrt(R_vol,A R_vol,B) (m): the pair's length scale, used for the detector's
+/// tolerance and for the radius cap (DESIGN.md §1).
+inline double referenceVolumeRadius(const Superquadric& A, const Superquadric& B) {
+  return std::sqrt(A.volumeEquivalentRadius() * B.volumeEquivalentRadius());
+}
 
 }  // namespace sqdem
