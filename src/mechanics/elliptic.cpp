@@ -1,9 +1,9 @@
 #include "sqdem/mechanics/elliptic.hpp"
 
+#include "sqdem/mechanics/elliptic_integrals.hpp"
+
 #include <algorithm>
 #include <array>
-#include <boost/math/special_functions/ellint_rd.hpp>
-#include <boost/math/special_functions/ellint_rf.hpp>
 #include <boost/math/tools/roots.hpp>
 #include <cmath>
 #include <numbers>
@@ -12,17 +12,6 @@
 
 namespace sqdem {
 namespace {
-
-/// Complete elliptic integrals K(m), E(m) of parameter m = e^2 through Carlson's symmetric forms,
-/// which take the complementary parameter 1 - m directly (accurate as m -> 1).
-struct CompleteEllipticIntegrals {
-  double K, E;
-};
-CompleteEllipticIntegrals completeEllipticIntegrals(double m, double oneMinusM) {
-  const double K = boost::math::ellint_rf(0.0, oneMinusM, 1.0);
-  const double E = K - m / 3.0 * boost::math::ellint_rd(0.0, oneMinusM, 1.0);
-  return {K, E};
-}
 
 double capRadius(double inverseRadius, double cap) {
   return inverseRadius > 1.0 / cap ? 1.0 / inverseRadius : cap;
@@ -87,8 +76,8 @@ double eccentricitySquaredExact(double ratio) {
   // x = 1 are spurious roots; psi < 0 just above 0 and psi > 0 just below 1.
   const auto psi = [ratio](double x) {
     const double t = 1.0 - x;
-    const auto [K, E] = completeEllipticIntegrals(x, t);
-    return ratio * E / ((ratio + 1.0) * K - E) - t;
+    const EllipticIntegrals I = ellipticIntegrals(x, t);
+    return ratio * I.E / ((ratio + 1.0) * I.K - I.E) - t;
   };
   double lo = 1e-3 * (1.0 - ratio);
   double hi = 1.0 - std::pow(ratio, 4.0 / 3.0) / 16.0;
@@ -124,7 +113,8 @@ double eccentricitySquared(double ratio, EccentricityMethod method) {
 
 HertzFactors hertzFactorsFromEccentricity(double e2) {
   const double t = 1.0 - e2;
-  const auto [K, E] = completeEllipticIntegrals(e2, t);
+  const EllipticIntegrals I = ellipticIntegrals(e2, t);
+  const double K = I.K, E = I.E;
   HertzFactors h;
   h.e2 = e2;
   h.gamma = std::numbers::pi * std::numbers::sqrt2 * std::sqrt(E) / (2.0 * K * std::sqrt(K * t));

@@ -1,0 +1,36 @@
+#pragma once
+// Greenwood-Williamson roughness on an elliptic contact (004 Eqs. 29-36).
+//
+// Asperity heights are Gaussian with standard deviation sigma_s; h = d/sigma_s is the
+// standardised separation of the mean planes. Summing Hertzian asperity contacts gives
+//   F_r = 4/3 N A_n E* R_c^1/2 sigma_s^3/2 gamma*_GW                                 (Eq. 33)
+//   A_r = pi N A_n R_c sigma_s beta*_GW                                              (Eq. 34)
+// with gamma*_GW = gamma F_3/2(h), beta*_GW = beta F_1(h) and the GW integrals
+//   F_n(h) = int_h^inf (z - h)^n phi(z) dz, phi the standard normal density          (Eqs. 31-32)
+//   F_3/2(h) = exp(-h^2/4) sqrt(h) [(h^2 + 1) K_1/4(h^2/4) - h^2 K_3/4(h^2/4)] / (4 sqrt(pi))
+//                                                                           (Eq. 35, h > 0)
+//   F_1(h)   = exp(-h^2/2)/sqrt(2 pi) - h/2 erfc(h/sqrt 2)                           (Eq. 36)
+// K_nu is the modified Bessel function of the second kind (Boost.Math). Eq. 36 as printed has
+// exp(-h^2/4) and erf; the integral of Eq. 32 it stands for is the form above (tested against
+// quadrature, as is Eq. 35). For h <= 0 (mean planes interpenetrating) F_3/2 is integrated
+// numerically (exp-sinh quadrature). gamma and beta come from the Hertz factors (004 Eqs.
+// 11-12) or from the JKR ones (Eqs. 27-28), as the review states after Eq. 36.
+//
+// N asperity density (1/m^2), A_n nominal contact area (m^2), sigma_s (m), E* (Pa), R_c (m).
+
+namespace sqdem {
+
+double greenwoodWilliamsonForceIntegral(double h);  ///< F_3/2(h), dimensionless
+double greenwoodWilliamsonAreaIntegral(double h);   ///< F_1(h), dimensionless
+
+struct RoughContact {
+  double asperityCount;  ///< N A_n, asperities on the nominal contact area (-)
+  double sigma;          ///< sigma_s, standard deviation of asperity heights (m)
+
+  /// Eq. 33 (N); gamma the smooth-contact force factor, h = d/sigma_s.
+  double force(double effectiveModulus, double Rc, double gamma, double h) const;
+  /// Eq. 34 (m^2); beta the smooth-contact area factor.
+  double area(double Rc, double beta, double h) const;
+};
+
+}  // namespace sqdem

@@ -1,0 +1,41 @@
+#include "sqdem/mechanics/roughness_gw.hpp"
+
+#include <boost/math/quadrature/exp_sinh.hpp>
+#include <boost/math/special_functions/bessel.hpp>
+#include <boost/math/special_functions/erf.hpp>
+#include <cmath>
+#include <numbers>
+
+namespace sqdem {
+
+double greenwoodWilliamsonForceIntegral(double h) {
+  using std::numbers::pi;
+  if (h > 0.0) {
+    const double x = 0.25 * h * h;
+    return std::exp(-x) * std::sqrt(h) *
+           ((h * h + 1.0) * boost::math::cyl_bessel_k(0.25, x) -
+            h * h * boost::math::cyl_bessel_k(0.75, x)) /
+           (4.0 * std::sqrt(pi));
+  }
+  // int_0^inf s^3/2 phi(s + h) ds
+  boost::math::quadrature::exp_sinh<double> integrator;
+  return integrator.integrate([h](double s) -> double {
+    return s * std::sqrt(s) * std::exp(-0.5 * (s + h) * (s + h)) / std::sqrt(2.0 * pi);
+  });
+}
+
+double greenwoodWilliamsonAreaIntegral(double h) {
+  return std::exp(-0.5 * h * h) / std::sqrt(2.0 * std::numbers::pi) -
+         0.5 * h * boost::math::erfc(h / std::numbers::sqrt2);
+}
+
+double RoughContact::force(double effectiveModulus, double Rc, double gamma, double h) const {
+  return 4.0 / 3.0 * asperityCount * effectiveModulus * std::sqrt(Rc) * sigma * std::sqrt(sigma) *
+         gamma * greenwoodWilliamsonForceIntegral(h);
+}
+
+double RoughContact::area(double Rc, double beta, double h) const {
+  return std::numbers::pi * asperityCount * Rc * sigma * beta * greenwoodWilliamsonAreaIntegral(h);
+}
+
+}  // namespace sqdem
