@@ -1,0 +1,88 @@
+#pragma once
+// Becker & Kamlah's elasto-plastic normal law for two ellipsoids (002), a Thornton-type law on
+// the elliptic Hertz contact of 002 Eqs. 1-10 (geometry A, B, R_e, f1, f2 in elliptic.hpp).
+//
+//   equivalent contact radius  c^2 = R_e delta f1^2 / f2                            (Eq. 9)
+//   yield                       p_Y = 1.6 Y; c_Y = pi p_Y R_e f1^3 / (2 E*)        (Eq. 2 at p_0 = p_Y)
+//                               delta_Y = c_Y^2 f2 / (R_e f1^2), F_pY = Hertz(delta_Y) (Eq. 10)
+//   elastic                     F = 4/3 E* sqrt(R_e) delta^3/2 f2^-3/2              (Eq. 10)
+//   elastic-plastic             F = pi lambda Y (c^2 - c_Y^2) + F_pY                (Eqs. 25-26)
+//                               lambda = l_max - (l_max - 1.6) [(e_max c_Y - c)/((e_max - 1) c_Y)]^n
+//                                                                      (Eq. 28, n = 1.8, c <= e_max c_Y)
+//   fully plastic               F = pi l_max Y (c^2 - c_Y^2) + F_pY, delta > delta_max    (Eqs. 30-31)
+//   NMC fits (Eq. 54, x = R_e / r_IJ, r_IJ = r_I + r_J with r_k = (a b c)^1/3 (Eq. 50)):
+//                               l_max = 1.05 exp(-4.62 x) + 2.42, e_max = 8.19 exp(-6.14 x) + 1.14
+//   unloading from delta_* > delta_Y (elastic, Eqs. 32-49):
+//     F_*,pY = pi p_Y (c_*^2 - c_Y^2) + F_pY (elastic-fully-plastic force at delta_*),
+//     R_e,p = 4 E* / (3 F_*,pY) ((F_*,pY + F_pY/2)/(pi p_Y))^3/2 / f1^3              (Eq. 44)
+//     delta_p = delta_* (1 - R_e/R_e,p)                                               (Eq. 34)
+//     beta = F(delta_*) / F_*,pY (Eq. 46 simplified with Eq. 43), R_e,pmax = beta^2 R_e,p (Eq. 48)
+//     F = 4/3 E* sqrt(R_e,pmax) (delta - delta_p)^3/2 f2^-3/2, 0 below delta_p        (Eq. 49)
+//   reloading follows the unloading curve back to delta_*, then the loading curve.
+//
+// The "elastic - fully plastic" variant (Thornton's law, 002 Fig. 5/15) drops the transition:
+// lambda = 1.6 for every delta > delta_Y, i.e. Eq. 24, and beta = 1.
+//
+// Parameters: E* (Pa), yield strength in simple tension Y (Pa), r_IJ (m) for the fits (or
+// explicit l_max, e_max). The fits are for NMC (002 Table 1) and aspect ratios 1:[0.5..2]:[0.5..2];
+// contact curvature is that of the undeformed bodies (the law's assumption), so the geometry is
+// computed once per contact. Finite deformations (c/r > 0.16..0.4) are outside its validity.
+
+#include "sqdem/mechanics/elliptic.hpp"
+
+namespace sqdem {
+
+struct BeckerKamlahParameters {
+  double effectiveModulus = 0.0;  ///< E* (Pa)
+  double yieldStrength = 0.0;     ///< Y (Pa); p_Y = 1.6 Y
+  double lambdaMax = 0.0;         ///< l_max (-), e.g. from nmcBeckerKamlahFits
+  double epsilonMax = 1.0;        ///< e_max (-), c_max / c_Y
+  double exponent = 1.8;          ///< n of Eq. 28
+  bool transition = true;         ///< false: elastic - fully plastic (Eq. 24)
+};
+
+/// Eq. 54: l_max and e_max for NMC from R_e and r_IJ = r_I + r_J (m).
+struct BeckerKamlahFits {
+  double lambdaMax, epsilonMax;
+};
+BeckerKamlahFits nmcBeckerKamlahFits(double Re, double meanRadiusSum);
+
+enum class PlasticRegime { Separated, Elastic, ElasticPlastic, FullyPlastic, Unloading };
+const char* describe(PlasticRegime regime);
+
+/// Per-contact history: the largest overlap ever reached (delta_*).
+struct BeckerKamlahHistory {
+  double maxOverlap = 0.0;
+};
+
+struct BeckerKamlahState {
+  double force = 0.0;          ///< (N), >= 0
+  double contactRadius = 0.0;  ///< equivalent contact radius c (m), area pi c^2
+  double plasticOverlap = 0.0; ///< delta_p (m)
+  PlasticRegime regime = PlasticRegime::Separated;
+};
+
+class BeckerKamlah {
+ public:
+  BeckerKamlah(const BeckerFactors& geometry, const BeckerKamlahParameters& parameters);
+
+  /// Force at this overlap; updates delta_* when the overlap exceeds it.
+  BeckerKamlahState evaluate(double overlap, BeckerKamlahHistory& history) const;
+
+  double yieldOverlap() const { return deltaY_; }  ///< delta_Y (m)
+  double yieldForce() const { return forceY_; }    ///< F_pY (N)
+  double plasticLimitOverlap() const { return deltaMax_; }  ///< delta_max, Eq. 30 (m)
+
+  /// Loading curve (monotonic, no history), Eqs. 10, 25-31.
+  double loadingForce(double overlap) const;
+
+ private:
+  double squaredContactRadius(double overlap) const { return g_.Re * overlap * g_.f1 * g_.f1 / g_.f2; }
+  double hertz(double Re, double overlap) const;
+
+  BeckerFactors g_;
+  BeckerKamlahParameters p_;
+  double pY_, cY_, deltaY_, forceY_, deltaMax_;
+};
+
+}  // namespace sqdem
