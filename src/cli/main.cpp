@@ -20,6 +20,12 @@ commands:
   geometry <file|->      Contact geometry probe: reads a JSON pair description (file, or - for
                          standard input) and prints the detector's and the elliptic-Hertz
                          factors' results as one JSON object. See docs in README.md.
+  sticking-velocity --radius R --density RHO --youngs-modulus E --poisson-ratio NU
+                    --wall-youngs-modulus EW --wall-poisson-ratio NUW
+                    --surface-energy GAMMA --yield-pressure PY
+                         Critical velocities (m/s) of a sphere hitting a flat wall under Nan et
+                         al.'s elasto-plastic adhesive law (seed 000, Eqs. 73-79; SI units):
+                         prints {"V_s", "V_y0", "V_y", "V_ys"} as one JSON object.
   help, --help, -h       This text.
 )";
 
@@ -35,11 +41,12 @@ int main(int argc, char** argv) {
   try {
     if (args[0] == "validate") return sqdem::cli::validateTable1(rest);
     if (args[0] == "geometry") return sqdem::cli::geometryProbe(rest);
+    if (args[0] == "sticking-velocity") return sqdem::cli::stickingVelocity(rest);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "sqdem %s: error: %s\n", args[0].c_str(), e.what());
     return 1;
   }
-  std::fprintf(stderr, "sqdem: unknown command '%s' (allowed: validate, geometry, help)\n",
+  std::fprintf(stderr, "sqdem: unknown command '%s' (allowed: validate, geometry, sticking-velocity, help)\n",
                args[0].c_str());
   return 2;
 }
