@@ -1,0 +1,65 @@
+#pragma once
+// Haervig et al.'s adhesive JKR contact, tangential and rolling models for reduced-stiffness DEM
+// (001 Eqs. 7-24, A.1-A.11). gamma is the surface energy density (J/m^2), W = 2 gamma.
+//
+//   contact radius   a^4 - 2 R delta a^2 - 4 pi gamma R^2 a / E* + R^2 delta^2 = 0  (Eq. 10),
+//                    stable root as in jkr_circular.hpp; a_0 = (9 pi gamma R^2/E*)^1/3 (Eq. 7)
+//   normal force     F = 4 E* a^3/(3 R) - 4 sqrt(pi gamma E* a^3) (Eqs. 8-9, > 0 repulsive);
+//                    simplified JKR: the contact breaks as soon as delta < 0 on separation
+//   tangential       F_t = -S_t s - 2 sqrt(5/6) beta sqrt(S_t m) v_t, S_t = 8 G* sqrt(R delta),
+//                    1/G* = (2 - nu_i)/G_i + (2 - nu_j)/G_j, |F_t| <= mu |F_N + 2 F_C|  (Eqs. 14-17)
+//   rolling          xi_crit = a_0/12 (dgamma/gamma), k_r = 4 F_C (a/a_0)^3/2, M_r = k_r xi,
+//                    |xi| <= xi_crit, F_C = 3 pi gamma R                              (Eqs. 18-22)
+//   reduced stiffness  gamma_mod = gamma (E_mod/E)^2/5 keeps the separation energy (Eq. 23,
+//                    A.11); in the rolling model F_C and xi_crit keep their unmodified values and
+//                    only a/a_0 is taken from the modified contact (001 Section 3.2).
+
+#include "sqdem/math/types.hpp"
+#include "sqdem/mechanics/jkr_circular.hpp"
+
+namespace sqdem {
+
+class HaervigJkr {
+ public:
+  HaervigJkr(double effectiveModulus, double surfaceEnergy, double effectiveRadius);
+
+  double contactRadius(double overlap) const;      ///< a(delta) (m), delta >= 0
+  double normalForce(double overlap) const;        ///< Eqs. 8-9 (N); 0 for delta < 0
+  double equilibriumContactRadius() const;         ///< a_0, Eq. 7 (m)
+  double criticalForce() const;                    ///< F_C = 3 pi gamma R (N)
+  double surfaceEnergy() const { return gamma_; }
+
+ private:
+  CircularJkr jkr_;
+  double gamma_;
+};
+
+/// Eq. 24: the surface energy that keeps the separation energy when E is replaced by E_mod.
+double reducedStiffnessSurfaceEnergy(double surfaceEnergy, double youngs, double reducedYoungs);
+
+/// Effective shear modulus of Eq. 15 (Pa) from the two bodies' E and nu.
+double haervigShearModulus(double youngsA, double poissonA, double youngsB, double poissonB);
+
+/// Eqs. 14-17 with the spring displacement s as history (m). Adds the tangential displacement
+/// increment, returns the force; on sliding, s is reset to the value consistent with the cap.
+struct HaervigTangential {
+  double shearModulus;  ///< G* (Pa), Eq. 15
+  double radius;        ///< R (m)
+  double mass;          ///< m (kg)
+  double beta;          ///< damping coefficient of Eq. 12 (<= 0 as printed; |beta| is used)
+  double friction;      ///< mu_s
+
+  Vec3 force(Vec3& spring, const Vec3& increment, const Vec3& velocity, double overlap,
+             double normalForce, double criticalForce) const;
+};
+
+/// Eqs. 18-22: rolling torque magnitude for rolling displacement xi (truncated in place, m).
+struct HaervigRolling {
+  double criticalForce;     ///< F_C of the unmodified material (N)
+  double criticalDistance;  ///< xi_crit = a_0/12 dgamma/gamma of the unmodified material (m)
+
+  /// k_r xi with k_r = 4 F_C (a/a_0)^3/2; a/a_0 from the (possibly modified) contact.
+  double torque(double& xi, double radiusRatio) const;
+};
+
+}  // namespace sqdem

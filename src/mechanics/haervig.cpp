@@ -1,0 +1,64 @@
+#include "sqdem/mechanics/haervig.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace sqdem {
+
+using std::numbers::pi;
+
+HaervigJkr::HaervigJkr(double effectiveModulus, double surfaceEnergy, double effectiveRadius)
+    : jkr_{effectiveModulus, 2.0 * surfaceEnergy, effectiveRadius}, gamma_(surfaceEnergy) {
+  if (!(effectiveModulus > 0) || !(surfaceEnergy > 0) || !(effectiveRadius > 0)) {
+    throw std::invalid_argument("Haervig JKR: E*, surface energy and radius must be positive");
+  }
+}
+
+double HaervigJkr::contactRadius(double overlap) const { return jkr_.contactRadius(std::max(overlap, 0.0)); }
+
+double HaervigJkr::normalForce(double overlap) const {
+  return overlap < 0.0 ? 0.0 : jkr_.forceAt(contactRadius(overlap));
+}
+
+double HaervigJkr::equilibriumContactRadius() const {
+  return std::cbrt(9.0 * pi * gamma_ * jkr_.radius * jkr_.radius / jkr_.effectiveModulus);
+}
+
+double HaervigJkr::criticalForce() const { return 3.0 * pi * gamma_ * jkr_.radius; }
+
+double reducedStiffnessSurfaceEnergy(double surfaceEnergy, double youngs, double reducedYoungs) {
+  return surfaceEnergy * std::pow(reducedYoungs / youngs, 0.4);
+}
+
+double haervigShearModulus(double youngsA, double poissonA, double youngsB, double poissonB) {
+  const double GA = youngsA / (2.0 * (1.0 + poissonA)), GB = youngsB / (2.0 * (1.0 + poissonB));
+  return 1.0 / ((2.0 - poissonA) / GA + (2.0 - poissonB) / GB);
+}
+
+Vec3 HaervigTangential::force(Vec3& spring, const Vec3& increment, const Vec3& velocity, double overlap,
+                              double normalForce, double criticalForce) const {
+  if (overlap <= 0.0) {
+    spring.setZero();
+    return Vec3::Zero();
+  }
+  const double St = 8.0 * shearModulus * std::sqrt(radius * overlap);
+  spring += increment;
+  const Vec3 damping = -2.0 * std::sqrt(5.0 / 6.0) * std::abs(beta) * std::sqrt(St * mass) * velocity;
+  Vec3 f = -St * spring + damping;
+  const double cap = friction * std::abs(normalForce + 2.0 * criticalForce);
+  const double magnitude = f.norm();
+  if (magnitude > cap) {
+    f *= cap / magnitude;
+    spring = -(f - damping) / St;
+  }
+  return f;
+}
+
+double HaervigRolling::torque(double& xi, double radiusRatio) const {
+  xi = std::clamp(xi, -criticalDistance, criticalDistance);
+  return 4.0 * criticalForce * std::pow(radiusRatio, 1.5) * xi;
+}
+
+}  // namespace sqdem
