@@ -1,0 +1,60 @@
+#include "sqdem/mechanics/mindlin_deresiewicz.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "sqdem/mechanics/elliptic_integrals.hpp"
+
+namespace sqdem {
+
+using std::numbers::pi;
+
+MindlinDeresiewicz::MindlinDeresiewicz(double shearModulus, double semiMajorAxis, double e2, double poisson,
+                                       double theta, double friction, double normalForce)
+    : G_(shearModulus), a_(semiMajorAxis), limit_(friction * normalForce) {
+  if (!(G_ > 0) || !(a_ > 0) || !(e2 >= 0 && e2 < 1) || !(friction > 0) || !(normalForce > 0)) {
+    throw std::invalid_argument("Mindlin-Deresiewicz: need G* > 0, a_c > 0, 0 <= e^2 < 1, mu > 0, F_n > 0");
+  }
+  const EllipticIntegrals I = ellipticIntegrals(e2);
+  const double along = (1.0 - poisson) * I.K + poisson * I.D, across = I.K - poisson * I.D;
+  const double c = std::cos(theta), s = std::sin(theta);
+  const double chi = 1.0 / std::sqrt(along * along * c * c + across * across * s * s);  // Eq. 57
+  phi_ = 4.0 / (pi * (2.0 - poisson) * chi);
+}
+
+double MindlinDeresiewicz::force(double displacement, MindlinDeresiewiczHistory& h) const {
+  const double dL = slipDisplacement();
+  const double step = displacement - h.displacement;
+  const int direction = step > 0 ? 1 : step < 0 ? -1 : h.direction;
+  if (h.direction != 0 && direction != h.direction) {  // reversal: a new turning point
+    h.turningDisplacement = h.displacement;
+    h.turningForce = h.force;
+    h.virgin = false;
+  }
+  double f;
+  if (h.virgin) {
+    const double x = std::min(std::abs(displacement) / dL, 1.0);
+    f = std::copysign(limit_ * (1.0 - std::pow(1.0 - x, 1.5)), displacement);
+  } else {
+    const double x = std::clamp(direction * (displacement - h.turningDisplacement) / (2.0 * dL), 0.0, 1.0);
+    f = std::clamp(h.turningForce + direction * 2.0 * limit_ * (1.0 - std::pow(1.0 - x, 1.5)), -limit_, limit_);
+  }
+  h.direction = direction;
+  h.displacement = displacement;
+  h.force = f;
+  return f;
+}
+
+double MindlinDeresiewicz::dissipationPerCycle(double amplitude) const {
+  const double r = amplitude / limit_;
+  return 9.0 * limit_ * limit_ * phi_ / (10.0 * G_ * a_) *
+         (1.0 - std::pow(1.0 - r, 5.0 / 3.0) - 5.0 * r / 6.0 * (1.0 + std::pow(1.0 - r, 2.0 / 3.0)));
+}
+
+double contactSemiMajorAxis(double area, double e2) {
+  return std::sqrt(area / (pi * std::sqrt(1.0 - e2)));
+}
+
+}  // namespace sqdem
