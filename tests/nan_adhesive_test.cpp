@@ -148,5 +148,15 @@ TEST(StickingVelocity, ReachesAdhesiveLimitAtHighYieldPressure) {
   EXPECT_THROW(stickingVelocities(table5(2.45e-6, 5e6)), std::invalid_argument);
 }
 
+// 000 Eq. 72: the spring time step 2 sqrt(m/k_e) with the Hertz bound k_e = 2 E R sqrt(alpha/R)
+// (Eqs. 68-70) over the Rayleigh time step (Eq. 71) has the closed form of Eq. 72.
+TEST(NanAdhesive, TimeStepRatioIsEq72) {
+  const double R = 1e-5, rho = 2500, E = 7e10, nu = 0.25, alphaOverR = 0.1;
+  const double m = 4.0 / 3.0 * pi * R * R * R * rho, ke = 2 * E * R * std::sqrt(alphaOverR);
+  const double ratio = nanCriticalTimeStep(m, ke) / rayleighTimeStep(R, rho, E / (2 * (1 + nu)), nu);
+  const double eq72 = (0.1631 * nu + 0.8766) / std::sqrt(1 + nu) * std::sqrt(4 / (3 * pi)) * std::pow(alphaOverR, -0.25);
+  EXPECT_NEAR(ratio, eq72, 1e-12 * eq72);
+}
+
 }  // namespace
 }  // namespace sqdem

@@ -40,7 +40,9 @@ BeckerKamlah::BeckerKamlah(const BeckerFactors& geometry, const BeckerKamlahPara
 }
 
 double BeckerKamlah::hertz(double Re, double overlap) const {
-  return overlap > 0.0 ? 4.0 / 3.0 * p_.effectiveModulus * std::sqrt(Re) * std::pow(overlap / g_.f2, 1.5) : 0.0;
+  BeckerFactors g = g_;
+  g.Re = Re;
+  return beckerHertzForce(p_.effectiveModulus, g, overlap);
 }
 
 double BeckerKamlah::loadingForce(double overlap) const {

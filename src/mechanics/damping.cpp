@@ -22,8 +22,8 @@ double linearDampingForce(double zeta, double mass, double stiffness, double ove
 double hertzDampingForce(double zeta, double mass, double effectiveModulus, double radius,
                          double overlap, double overlapRate) {
   if (overlap <= 0.0) return 0.0;
-  const double Sn = 2.0 * effectiveModulus * std::sqrt(radius * overlap);
-  return 2.0 * std::sqrt(5.0 / 6.0) * zeta * std::sqrt(mass * Sn) * overlapRate;
+  const double Sn = 2.0 * effectiveModulus * std::sqrt(radius * overlap);  // Eq. 13
+  return std::sqrt(5.0 / 6.0) * linearDampingForce(zeta, mass, Sn, overlapRate);
 }
 
 double viscoelasticConstant(double eta1, double eta2, double youngs, double poisson) {

@@ -5,12 +5,14 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "sqdem/mechanics/damping.hpp"
+
 namespace sqdem {
 
 using std::numbers::pi;
 
 HaervigJkr::HaervigJkr(double effectiveModulus, double surfaceEnergy, double effectiveRadius)
-    : jkr_{effectiveModulus, 2.0 * surfaceEnergy, effectiveRadius}, gamma_(surfaceEnergy) {
+    : jkr_{effectiveModulus, 2.0 * surfaceEnergy, effectiveRadius} {
   if (!(effectiveModulus > 0) || !(surfaceEnergy > 0) || !(effectiveRadius > 0)) {
     throw std::invalid_argument("Haervig JKR: E*, surface energy and radius must be positive");
   }
@@ -23,10 +25,10 @@ double HaervigJkr::normalForce(double overlap) const {
 }
 
 double HaervigJkr::equilibriumContactRadius() const {
-  return std::cbrt(9.0 * pi * gamma_ * jkr_.radius * jkr_.radius / jkr_.effectiveModulus);
+  return std::cbrt(9.0 * pi * surfaceEnergy() * jkr_.radius * jkr_.radius / jkr_.effectiveModulus);
 }
 
-double HaervigJkr::criticalForce() const { return 3.0 * pi * gamma_ * jkr_.radius; }
+double HaervigJkr::criticalForce() const { return 3.0 * pi * surfaceEnergy() * jkr_.radius; }
 
 double reducedStiffnessSurfaceEnergy(double surfaceEnergy, double youngs, double reducedYoungs) {
   return surfaceEnergy * std::pow(reducedYoungs / youngs, 0.4);
@@ -45,7 +47,7 @@ Vec3 HaervigTangential::force(Vec3& spring, const Vec3& increment, const Vec3& v
   }
   const double St = 8.0 * shearModulus * std::sqrt(radius * overlap);
   spring += increment;
-  const Vec3 damping = -2.0 * std::sqrt(5.0 / 6.0) * std::abs(beta) * std::sqrt(St * mass) * velocity;
+  const Vec3 damping = -std::sqrt(5.0 / 6.0) * linearDampingForce(std::abs(beta), mass, St, 1.0) * velocity;  // Eq. 16
   Vec3 f = -St * spring + damping;
   const double cap = friction * std::abs(normalForce + 2.0 * criticalForce);
   const double magnitude = f.norm();

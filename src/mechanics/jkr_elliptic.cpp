@@ -8,7 +8,6 @@
 #include <stdexcept>
 
 #include "sqdem/mechanics/elliptic_integrals.hpp"
-#include "sqdem/mechanics/jkr_circular.hpp"
 
 namespace sqdem {
 
@@ -16,8 +15,8 @@ using std::numbers::pi;
 
 JohnsonGreenwoodPoint johnsonGreenwoodPoint(double lambda, double g) {
   const double g2 = g * g, sg = std::sqrt(g);
-  const auto [K, E, B, C, D] = ellipticIntegrals(1.0 - g2, g2);
-  (void)E;
+  const EllipticIntegrals I = ellipticIntegrals(1.0 - g2, g2);
+  const double K = I.K, B = I.B, C = I.C, D = I.D;
   JohnsonGreenwoodPoint p;
   p.g = g;
   p.Pi2 = ((lambda * lambda + 1.0) * C + D) / (lambda * ((D + C) * (B + g2 * C) - g2 * C * C));
@@ -37,18 +36,18 @@ JohnsonGreenwoodPoint johnsonGreenwoodPoint(double lambda, double g) {
 }
 
 EllipticJkr::EllipticJkr(double effectiveModulus, double workOfAdhesion, const RelativeRadii& radii)
-    : E_(effectiveModulus), W_(workOfAdhesion), Rc1_(std::sqrt(radii.Ri * radii.Rj)),
+    : circle_{effectiveModulus, workOfAdhesion, std::sqrt(radii.Ri * radii.Rj)},
       lambda_(std::sqrt(radii.ratio())) {
-  if (!(E_ > 0.0) || !(W_ > 0.0) || !(radii.Ri > 0.0) || !(radii.Rj >= radii.Ri)) {
+  if (!(effectiveModulus > 0.0) || !(workOfAdhesion > 0.0) || !(radii.Ri > 0.0) || !(radii.Rj >= radii.Ri)) {
     throw std::invalid_argument("elliptic JKR: need E* > 0, W > 0 and 0 < Ri <= Rj");
   }
-  forceScale_ = 3.0 * pi * Rc1_ * W_;
-  overlapScale_ = std::pow(9.0 * pi * W_ * std::sqrt(Rc1_) / (4.0 * E_), 2.0 / 3.0);
-  areaScale_ = std::pow(9.0 * std::pow(pi, 2.5) * W_ * Rc1_ * Rc1_ / (4.0 * E_), 2.0 / 3.0);
+  const double E = effectiveModulus, W = workOfAdhesion, Rc1 = circle_.radius;
+  forceScale_ = 3.0 * pi * Rc1 * W;
+  overlapScale_ = std::pow(9.0 * pi * W * std::sqrt(Rc1) / (4.0 * E), 2.0 / 3.0);
+  areaScale_ = std::pow(9.0 * std::pow(pi, 2.5) * W * Rc1 * Rc1 / (4.0 * E), 2.0 / 3.0);
   if (circular()) {
-    const CircularJkr jkr{E_, W_, Rc1_};
-    pullOffForce_ = -jkr.pullOffForce();
-    detachmentOverlap_ = jkr.overlapAt(jkr.minimumContactRadius());
+    pullOffForce_ = -circle_.pullOffForce();
+    detachmentOverlap_ = circle_.overlapAt(circle_.minimumContactRadius());
     return;
   }
   gHertz_ = std::sqrt(1.0 - eccentricitySquaredExact(radii.ratio()));
@@ -70,9 +69,8 @@ EllipticJkrState EllipticJkr::evaluate(double overlap) const {
     return s;
   }
   if (circular()) {
-    const CircularJkr jkr{E_, W_, Rc1_};
-    const double a = jkr.contactRadius(overlap);
-    s.force = jkr.forceAt(a);
+    const double a = circle_.contactRadius(overlap);
+    s.force = circle_.forceAt(a);
     s.area = pi * a * a;
     return s;
   }
@@ -80,14 +78,15 @@ EllipticJkrState EllipticJkr::evaluate(double overlap) const {
   // distance to g_H, then TOMS 748. Beyond the last representable bracket the contact is Hertz.
   const double target = overlap / overlapScale_;
   const auto residual = [&](double g) { return johnsonGreenwoodPoint(lambda_, g).overlap - target; };
-  double hi = gDetach_, lo = gDetach_;
-  for (double s2 = 0.5; residual(lo) <= 0.0; s2 *= 0.5) {
+  double hi = gDetach_, lo = gDetach_, residualLo = residual(lo);
+  for (double s2 = 0.5; residualLo <= 0.0; s2 *= 0.5) {
     hi = lo;
     lo = gHertz_ + s2 * (gDetach_ - gHertz_);
+    residualLo = residual(lo);
     if (lo - gHertz_ <= 4.0 * std::numeric_limits<double>::epsilon()) break;
   }
   double g = gHertz_;
-  if (residual(lo) > 0.0) {
+  if (residualLo > 0.0) {
     std::uintmax_t iterations = 100;
     const auto root = boost::math::tools::toms748_solve(
         residual, lo, hi, boost::math::tools::eps_tolerance<double>(50), iterations);

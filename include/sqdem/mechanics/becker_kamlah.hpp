@@ -78,6 +78,7 @@ class BeckerKamlah {
 
  private:
   double squaredContactRadius(double overlap) const { return g_.Re * overlap * g_.f1 * g_.f1 / g_.f2; }
+  /// Eq. 10 with effective radius Re (R_e loading, R_e,pmax unloading) (N).
   double hertz(double Re, double overlap) const;
 
   BeckerFactors g_;

@@ -27,11 +27,11 @@ class HaervigJkr {
   double normalForce(double overlap) const;        ///< Eqs. 8-9 (N); 0 for delta < 0
   double equilibriumContactRadius() const;         ///< a_0, Eq. 7 (m)
   double criticalForce() const;                    ///< F_C = 3 pi gamma R (N)
-  double surfaceEnergy() const { return gamma_; }
 
  private:
+  double surfaceEnergy() const { return 0.5 * jkr_.workOfAdhesion; }  ///< gamma = W/2
+
   CircularJkr jkr_;
-  double gamma_;
 };
 
 /// Eq. 24: the surface energy that keeps the separation energy when E is replaced by E_mod.

@@ -28,6 +28,7 @@
 // parameter > 3, 001 Eq. 1) and for small contact ellipses (Hertz assumptions).
 
 #include "sqdem/mechanics/elliptic.hpp"
+#include "sqdem/mechanics/jkr_circular.hpp"
 
 namespace sqdem {
 
@@ -58,12 +59,12 @@ class EllipticJkr {
   EllipticJkrState evaluate(double overlap) const;
   double pullOffForce() const { return pullOffForce_; }            ///< most tensile force (N, < 0)
   double detachmentOverlap() const { return detachmentOverlap_; }  ///< (m, < 0)
-  double hertzAxisRatio() const { return gHertz_; }
 
  private:
   bool circular() const { return lambda_ >= 1.0 - 1e-6; }
 
-  double E_, W_, Rc1_, lambda_;
+  CircularJkr circle_;  ///< E*, W and R_c1; the law itself when circular()
+  double lambda_;
   double forceScale_, overlapScale_, areaScale_;
   double gHertz_ = 1.0, gDetach_ = 1.0;
   double pullOffForce_ = 0.0, detachmentOverlap_ = 0.0;
