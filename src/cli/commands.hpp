@@ -11,5 +11,6 @@ using Arguments = std::vector<std::string>;
 int validateTable1(const Arguments& args);
 int geometryProbe(const Arguments& args);
 int stickingVelocity(const Arguments& args);
+int contactDriver(const Arguments& args);
 
 }  // namespace sqdem::cli

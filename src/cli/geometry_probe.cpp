@@ -7,112 +7,17 @@
 // Output: one JSON object, keys documented in README.md.
 
 #include <cmath>
-#include <fstream>
 #include <iostream>
-#include <nlohmann/json.hpp>
-#include <sstream>
-#include <stdexcept>
 
 #include "commands.hpp"
+#include "json_input.hpp"
 #include "sqdem/contact/detector.hpp"
 #include "sqdem/mechanics/elliptic.hpp"
 
 namespace sqdem::cli {
 namespace {
 
-using nlohmann::json;
-
-class InputError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
-
-double number(const json& object, const std::string& key, const std::string& where) {
-  if (!object.contains(key)) throw InputError(where + ": missing key '" + key + "'");
-  const json& v = object.at(key);
-  if (!v.is_number() || !std::isfinite(v.get<double>())) {
-    throw InputError(where + ": '" + key + "' must be a finite number");
-  }
-  return v.get<double>();
-}
-
-template <int N>
-Eigen::Matrix<double, N, 1> vector(const json& object, const std::string& key, const std::string& where) {
-  if (!object.contains(key)) throw InputError(where + ": missing key '" + key + "'");
-  const json& v = object.at(key);
-  if (!v.is_array() || v.size() != N) {
-    throw InputError(where + ": '" + key + "' must be an array of " + std::to_string(N) + " numbers");
-  }
-  Eigen::Matrix<double, N, 1> out;
-  for (int i = 0; i < N; ++i) {
-    if (!v[i].is_number()) throw InputError(where + ": '" + key + "' must contain numbers");
-    out(i) = v[i].get<double>();
-  }
-  if (!out.allFinite()) throw InputError(where + ": '" + key + "' must be finite");
-  return out;
-}
-
-void rejectUnknownKeys(const json& object, std::initializer_list<const char*> allowed,
-                       const std::string& where) {
-  for (const auto& [key, value] : object.items()) {
-    bool known = false;
-    for (const char* a : allowed) known = known || key == a;
-    if (!known) {
-      std::string list;
-      for (const char* a : allowed) list += std::string(list.empty() ? "" : ", ") + a;
-      throw InputError(where + ": unknown key '" + key + "' (allowed: " + list + ")");
-    }
-  }
-}
-
-struct Particle {
-  Superquadric shape;
-  Pose pose;
-};
-
-Particle readParticle(const json& p, const std::string& where) {
-  if (!p.is_object()) throw InputError(where + " must be an object");
-  rejectUnknownKeys(p, {"centre", "quaternion", "a", "b", "c", "n1", "n2", "eta1", "eta2"}, where);
-  const auto exponent = [&](const char* n, const char* eta) {
-    if (p.contains(n) && p.contains(eta)) {
-      throw InputError(where + ": give either '" + n + "' or '" + eta + "', not both");
-    }
-    if (p.contains(eta)) return 2.0 / number(p, eta, where);
-    return p.contains(n) ? number(p, n, where) : 2.0;
-  };
-  const double n1 = exponent("n1", "eta1"), n2 = exponent("n2", "eta2");
-  const Eigen::Vector4d q = vector<4>(p, "quaternion", where);
-  if (std::abs(q.norm() - 1.0) > 1e-6) {
-    throw InputError(where + ": 'quaternion' [w,x,y,z] must have unit norm (got " +
-                     std::to_string(q.norm()) + ")");
-  }
-  try {
-    Particle out{Superquadric(number(p, "a", where), number(p, "b", where), number(p, "c", where), n1, n2), {}};
-    out.pose.position = vector<3>(p, "centre", where);
-    out.pose.orientation = Quat(q(0), q(1), q(2), q(3)).normalized();
-    return out;
-  } catch (const std::invalid_argument& e) {
-    throw InputError(where + ": " + e.what());
-  }
-}
-
 json toJson(const Vec3& v) { return json::array({v.x(), v.y(), v.z()}); }
-
-json readInput(const std::string& path) {
-  std::stringstream text;
-  if (path == "-") {
-    text << std::cin.rdbuf();
-  } else {
-    std::ifstream file(path);
-    if (!file) throw InputError("cannot open '" + path + "'");
-    text << file.rdbuf();
-  }
-  try {
-    return json::parse(text.str());
-  } catch (const json::parse_error& e) {
-    throw InputError("'" + path + "' is not valid JSON: " + e.what());
-  }
-}
 
 json probe(const json& input) {
   if (!input.is_object()) throw InputError("top level must be a JSON object");
@@ -176,7 +81,7 @@ int geometryProbe(const Arguments& args) {
     return 2;
   }
   try {
-    std::cout << probe(readInput(args[0])).dump(2) << "\n";
+    std::cout << probe(readJsonInput(args[0])).dump(2) << "\n";
     return 0;
   } catch (const InputError& e) {
     std::cerr << "sqdem geometry: " << (args[0] == "-" ? "<stdin>" : args[0]) << ": " << e.what() << "\n";

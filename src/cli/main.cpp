@@ -26,6 +26,12 @@ commands:
                          Critical velocities (m/s) of a sphere hitting a flat wall under Nan et
                          al.'s elasto-plastic adhesive law (seed 000, Eqs. 73-79; SI units):
                          prints {"V_s", "V_y0", "V_y", "V_ys"} as one JSON object.
+  contact <file|-> [--out DIR]
+                         Single-contact driver: drives one contact (two posed shapes through the
+                         detector, or prescribed radii) along a normal (and optional tangential)
+                         displacement history with one or more laws (hertz, becker_kamlah, jkr,
+                         nan); writes one CSV per curve, a gnuplot script and a PNG to DIR
+                         (default .), and prints a JSON summary. See README.md and examples/.
   help, --help, -h       This text.
 )";
 
@@ -42,11 +48,12 @@ int main(int argc, char** argv) {
     if (args[0] == "validate") return sqdem::cli::validateTable1(rest);
     if (args[0] == "geometry") return sqdem::cli::geometryProbe(rest);
     if (args[0] == "sticking-velocity") return sqdem::cli::stickingVelocity(rest);
+    if (args[0] == "contact") return sqdem::cli::contactDriver(rest);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "sqdem %s: error: %s\n", args[0].c_str(), e.what());
     return 1;
   }
-  std::fprintf(stderr, "sqdem: unknown command '%s' (allowed: validate, geometry, sticking-velocity, help)\n",
+  std::fprintf(stderr, "sqdem: unknown command '%s' (allowed: validate, geometry, sticking-velocity, contact, help)\n",
                args[0].c_str());
   return 2;
 }

@@ -62,6 +62,13 @@ EllipticJkr::EllipticJkr(double effectiveModulus, double workOfAdhesion, const R
   pullOffForce_ = forceMin.second * forceScale_;
 }
 
+EllipticJkrState EllipticJkr::evaluate(double overlap, JkrHistory& history) const {
+  if (!history.attached && overlap < 0.0) return EllipticJkrState{.attached = false};
+  const EllipticJkrState s = evaluate(overlap);
+  history.attached = s.attached;
+  return s;
+}
+
 EllipticJkrState EllipticJkr::evaluate(double overlap) const {
   EllipticJkrState s;
   if (overlap < detachmentOverlap_) {

@@ -75,7 +75,9 @@ NanState NanAdhesivePlastic::evaluate(double overlap, NanHistory& history) const
   const double fe = u.kE * (overlap - u.alphaP);
   const double fp = fY_ + kP_ * (overlap - alphaY_);
   s.force = std::min(fe, fp);
-  s.branch = fp < fe ? NanBranch::Plastic : NanBranch::Elastic;
+  // On the plastic line only at a new maximum past yield; with k_p = k_el the two lines coincide
+  // below alpha_y, so comparing fe and fp would pick the label by round-off.
+  s.branch = overlap > alphaY_ && overlap >= history.maxOverlap ? NanBranch::Plastic : NanBranch::Elastic;
   if (overlap > alphaY_ && overlap > history.maxOverlap) history.maxOverlap = overlap;
   return s;
 }

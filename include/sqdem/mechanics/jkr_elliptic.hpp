@@ -51,12 +51,20 @@ struct EllipticJkrState {
   bool attached = true;     ///< false below the detachment overlap (force and area are 0)
 };
 
+/// Displacement-controlled JKR hysteresis: contact forms (snaps in) when the overlap reaches 0
+/// and breaks below the detachment overlap (004 after Eq. 28; 001 Fig. 2 for the circular case).
+struct JkrHistory {
+  bool attached = false;
+};
+
 class EllipticJkr {
  public:
   EllipticJkr(double effectiveModulus, double workOfAdhesion, const RelativeRadii& radii);
 
   /// Force and area on the stable (displacement-controlled) branch at this overlap (m).
   EllipticJkrState evaluate(double overlap) const;
+  /// The same along a displacement history: zero force until first contact at overlap 0.
+  EllipticJkrState evaluate(double overlap, JkrHistory& history) const;
   double pullOffForce() const { return pullOffForce_; }            ///< most tensile force (N, < 0)
   double detachmentOverlap() const { return detachmentOverlap_; }  ///< (m, < 0)
 
