@@ -3,6 +3,14 @@
 // of 002 Table 1: two ellipsoids with given aspect ratios a:b:c and mean radius r_k = (a b c)^1/3,
 // aligned, touching at their x tips ("compressed in x-direction"); displacement-driven to peak
 // overlaps given as fractions of r_IJ = r_I + r_J (Eq. 50), unloaded in between.
+//
+// The paper quotes e = 0.65 for the Table 3 case and epsilon_max = 2.94 (delta_max/delta_Y = 8.65)
+// for the Table 4 case. With the x tips in contact (the text's "compressed in x-direction", a
+// along x) this geometry gives e = 0.806 and epsilon_max = 2.787 (7.77). Trying every pairing
+// of tips and tangent alignments of the two ellipsoids: Table 3's e = 0.65 matches only the
+// y tips with aligned axes (e = 0.652, but then epsilon_max = 2.27), and no pairing gives
+// epsilon_max = 2.94 for Table 4 (closest 2.907, x tip against z tip). The quoted values are
+// therefore not consistent with one stated geometry; the literal x-tip reading is used.
 
 #include <array>
 
