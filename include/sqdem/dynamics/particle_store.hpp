@@ -1,0 +1,50 @@
+#pragma once
+// Structure-of-arrays particle state (DESIGN.md §3). Index i is a particle's slot; `id` is its
+// permanent number (slots may be re-ordered, ids never change).
+//
+// Rotation uses the NO_SQUISH variables of Miller et al. (J. Chem. Phys. 116, 8649, 2002): the
+// unit quaternion q (body -> world) and its conjugate momentum p = 2 q ⊗ (0, L_body), a
+// 4-vector; the body angular momentum is L_body = vec(q* ⊗ p) / 2. `angularVelocity` (world) is
+// derived from (q, p) after every integration stage.
+
+#include <cstdint>
+#include <vector>
+
+#include "sqdem/math/types.hpp"
+
+namespace sqdem {
+
+using Vec4 = Eigen::Vector4d;
+
+struct ParticleStore {
+  std::vector<std::uint32_t> id;
+  std::vector<std::uint32_t> shape;     ///< index into the scene's shape table
+  std::vector<std::uint32_t> material;  ///< index into the scene's material table
+  std::vector<Vec3> position;           ///< centre (m)
+  std::vector<Quat> orientation;        ///< body -> world
+  std::vector<Vec3> velocity;           ///< (m/s)
+  std::vector<Vec4> conjugateMomentum;  ///< NO_SQUISH p (kg m^2/s)
+  std::vector<Vec3> angularVelocity;    ///< world frame (rad/s), derived
+  std::vector<Vec3> force;              ///< (N), reset every step
+  std::vector<Vec3> torque;             ///< world frame (N m), reset every step
+  std::vector<double> mass;             ///< (kg)
+  std::vector<Vec3> inertia;            ///< principal moments in the body frame (kg m^2)
+
+  std::size_t size() const { return position.size(); }
+
+  /// Appends a particle at rest-free initial state; returns its slot.
+  std::size_t add(std::uint32_t shapeIndex, std::uint32_t materialIndex, const Vec3& centre, const Quat& q,
+                  double particleMass, const Vec3& principalInertia);
+
+  /// Sets the angular velocity (world frame) of particle i, i.e. its conjugate momentum.
+  void setAngularVelocity(std::size_t i, const Vec3& omegaWorld);
+  /// Body-frame angular momentum L_body = vec(q* ⊗ p) / 2.
+  Vec3 bodyAngularMomentum(std::size_t i) const;
+  /// Recomputes angularVelocity[i] from (q, p).
+  void updateAngularVelocity(std::size_t i);
+
+  double translationalEnergy(std::size_t i) const { return 0.5 * mass[i] * velocity[i].squaredNorm(); }
+  double rotationalEnergy(std::size_t i) const;
+};
+
+}  // namespace sqdem
