@@ -1,0 +1,56 @@
+#pragma once
+// The force law a pair of materials/shapes uses in the engine, chosen once per pair type
+// (DESIGN.md §2) and evaluated per contact from ContactGeometry and the relative motion.
+//
+//   normal, elliptic Hertz    F = 4/3 E* Rc^1/2 gamma delta^3/2, A = pi Rc beta delta
+//                             (004 Eqs. 1-2, 11-14; relative radii capped at cap R_vol_ref)
+//   normal, volume spheres    the same with the volume-equivalent spheres' R* (gamma = sqrt 2,
+//                             beta = 2, Rc = R*/2): no curvature is used
+//   damping                   001 Eqs. 11-13: 2 sqrt(5/6) zeta sqrt(m* S_n) d(delta)/dt with
+//                             S_n = 2 E* sqrt(R_eff delta), R_eff = gamma^2 Rc (so that S_n is
+//                             dF/d(delta) of the elliptic law), zeta from the restitution e
+//   tangential                incremental spring xi kept in the tangent plane (rotated with the
+//                             contact), stiffness k_t = 8 G* a, a = sqrt(A/pi) (Mindlin's no-slip
+//                             stiffness of the area-equivalent circle, 004 Eq. 56 with Phi = 1),
+//                             damping 2 sqrt(5/6) zeta sqrt(m* k_t), Coulomb cap |F_t| <= mu F_n
+//   total normal force        not clamped: near the end of a damped contact it turns slightly
+//                             tensile, which the restitution relation zeta(e) of 001 Eq. 12
+//                             assumes (clamping it would raise the effective e, 0.30 -> 0.40).
+// Units: Pa, m, kg, s, N.
+
+#include "sqdem/contact/contact_geometry.hpp"
+#include "sqdem/mechanics/elliptic.hpp"
+
+namespace sqdem {
+
+enum class NormalLaw { EllipticHertz, VolumeSphereHertz };
+
+struct ContactModel {
+  NormalLaw normal = NormalLaw::EllipticHertz;
+  EccentricityMethod eccentricity = EccentricityMethod::Tabulated;
+  double capFactor = 10.0;         ///< relative radii capped at capFactor R_vol_ref
+  double effectiveModulus = 0.0;   ///< E* (Pa)
+  double effectiveShear = 0.0;     ///< G* = ((2 - nuA)/GA + (2 - nuB)/GB)^-1 (Pa)
+  double friction = 0.0;           ///< mu (-)
+  double dampingRatio = 0.0;       ///< zeta(e) (-), 0 for e = 1
+};
+
+/// What the law needs besides the geometry.
+struct ContactKinematics {
+  Vec3 relativeVelocity = Vec3::Zero();  ///< velocity of B minus A at the contact point (m/s)
+  double effectiveMass = 0.0;            ///< m* (kg)
+  double volumeRadiusA = 0.0;            ///< R_vol of A (m)
+  double volumeRadiusB = 0.0;            ///< R_vol of B (m); 0 for a wall
+};
+
+struct ContactForce {
+  Vec3 onB = Vec3::Zero();  ///< force on B (N); A receives -onB
+  double normal = 0.0;      ///< normal force magnitude (N)
+  double area = 0.0;        ///< contact area (m^2)
+};
+
+/// Force of a touching contact; `spring` is the tangential history (m), updated; step dt (s).
+ContactForce contactForce(const ContactModel& model, const ContactGeometry& geometry,
+                          const ContactKinematics& motion, Vec3& spring, double dt);
+
+}  // namespace sqdem

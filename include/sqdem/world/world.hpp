@@ -1,0 +1,117 @@
+#pragma once
+// The World: particles, shapes, materials, the interaction table, walls, the persistent contact
+// list and the time step loop (DESIGN.md §2):
+//   half kick, drift (and walls move) -> broad phase (cell list, rebuilt when needed)
+//   -> narrow phase (detector, warm-started from the contact's history) -> contact law
+//   -> forces reduced per particle in contact order -> half kick.
+// Contacts are computed in parallel (OpenMP) into their own records and reduced serially in a
+// fixed order, so results do not depend on the number of threads.
+
+#include <cstdint>
+#include <vector>
+
+#include "sqdem/contact/detector.hpp"
+#include "sqdem/dynamics/particle_store.hpp"
+#include "sqdem/geometry/plane.hpp"
+#include "sqdem/geometry/superquadric.hpp"
+#include "sqdem/world/cell_list.hpp"
+#include "sqdem/world/contact_model.hpp"
+
+namespace sqdem {
+
+struct Material {
+  double youngsModulus = 0.0;  ///< E (Pa)
+  double poissonRatio = 0.0;   ///< nu (-)
+  double density = 0.0;        ///< rho (kg/m^3)
+  double friction = 0.0;       ///< mu (-), pair value = min of the two
+  double restitution = 1.0;    ///< e (-), pair value = min of the two
+};
+
+/// An infinite plane moving with constant velocity; `force` is what the particles exert on it.
+struct Wall {
+  Plane plane;
+  Vec3 velocity = Vec3::Zero();  ///< (m/s)
+  std::uint32_t material = 0;
+  Vec3 force = Vec3::Zero();     ///< (N), from the last force computation
+};
+
+inline constexpr std::uint32_t wallFlag = 0x80000000u;
+
+/// A touching pair and its history. b is a particle slot, or wallFlag | wall index.
+struct Contact {
+  std::uint32_t a = 0, b = 0;
+  Vec3 shift = Vec3::Zero();    ///< periodic image offset of b (m)
+  ContactGeometry geometry;     ///< last solution: warm start for the next step
+  Vec3 spring = Vec3::Zero();   ///< tangential spring (m)
+  ContactForce force;           ///< force on b from the last step
+
+  bool onWall() const { return (b & wallFlag) != 0; }
+  std::uint64_t key() const { return (std::uint64_t{a} << 32) | b; }
+};
+
+struct WorldStatistics {
+  long long detectorCalls = 0;
+  long long detectorIterations = 0;
+  long long detectorFailures = 0;  ///< statuses other than Converged/Separated (contact skipped)
+  long long deepOverlaps = 0;      ///< contacts with overlap > 0.5 R_vol (time step too large?)
+};
+
+class World {
+ public:
+  World(std::vector<Superquadric> shapes, std::vector<Material> materials, const Domain& domain, double skin);
+
+  /// Sets the law of a material pair (symmetric); every pair must be set before the first step.
+  void setContactModel(std::uint32_t materialA, std::uint32_t materialB, const ContactModel& model);
+  /// The default law from two materials: elliptic Hertz, pair friction/restitution.
+  ContactModel defaultContactModel(std::uint32_t materialA, std::uint32_t materialB) const;
+
+  std::size_t addParticle(std::uint32_t shape, std::uint32_t material, const Vec3& centre, const Quat& q);
+  void addWall(const Wall& wall) { walls_.push_back(wall); }
+
+  void setGravity(const Vec3& g) { gravity_ = g; }
+  void setTimeStep(double dt) { dt_ = dt; }
+  double timeStep() const { return dt_; }
+  double time() const { return time_; }
+
+  /// Advances one step (computes the initial forces first if needed).
+  void step();
+  /// Computes contacts and forces at the current state (no integration).
+  void computeForces();
+
+  ParticleStore& particles() { return particles_; }
+  const ParticleStore& particles() const { return particles_; }
+  const std::vector<Superquadric>& shapes() const { return shapes_; }
+  const std::vector<Material>& materials() const { return materials_; }
+  std::vector<Wall>& walls() { return walls_; }
+  const std::vector<Wall>& walls() const { return walls_; }
+  const std::vector<Contact>& contacts() const { return contacts_; }
+  const Domain& domain() const { return domain_; }
+  const WorldStatistics& statistics() const { return statistics_; }
+  const CellList& cellList() const { return cellList_; }
+
+  double kineticEnergy() const;
+  /// Rayleigh time (000 Eq. 71) of the particle with the smallest semi-axis (s); scenes use a
+  /// fraction of it.
+  double rayleighTimeStep() const;
+
+ private:
+  const ContactModel& model(std::uint32_t ma, std::uint32_t mb) const { return models_[ma * materials_.size() + mb]; }
+  void solveContact(Contact& c) const;
+
+  std::vector<Superquadric> shapes_;
+  std::vector<Material> materials_;
+  std::vector<ContactModel> models_;
+  std::vector<bool> modelSet_;
+  Domain domain_;
+  CellList cellList_;
+  ParticleStore particles_;
+  std::vector<double> boundingRadius_;
+  std::vector<Wall> walls_;
+  std::vector<Contact> contacts_;
+  WorldStatistics statistics_;
+  Vec3 gravity_ = Vec3::Zero();
+  double dt_ = 0.0, time_ = 0.0;
+  bool forcesCurrent_ = false;
+};
+
+}  // namespace sqdem

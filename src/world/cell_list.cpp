@@ -1,0 +1,99 @@
+#include "sqdem/world/cell_list.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sqdem {
+
+bool CellList::needsRebuild(const ParticleStore& particles) const {
+  if (reference_.size() != particles.size()) return true;
+  const double limit = 0.25 * skin_ * skin_;
+  for (std::size_t i = 0; i < particles.size(); ++i) {
+    if ((particles.position[i] - reference_[i]).squaredNorm() > limit) return true;
+  }
+  return false;
+}
+
+void CellList::rebuild(ParticleStore& particles, const std::vector<double>& boundingRadius) {
+  const std::size_t n = particles.size();
+  for (std::size_t i = 0; i < n; ++i) particles.position[i] = domain_.wrap(particles.position[i]);
+  reference_ = particles.position;
+  pairs_.clear();
+  ++builds_;
+  if (n < 2) return;
+
+  const double maxRadius = *std::max_element(boundingRadius.begin(), boundingRadius.end());
+  const double width = 2.0 * maxRadius + skin_;
+  std::array<int, 3> cells{};
+  Vec3 cellSize;
+  for (int d = 0; d < 3; ++d) {
+    cells[d] = std::max(1, static_cast<int>(std::floor(domain_.length()(d) / width)));
+    if (domain_.periodic[d] && cells[d] < minimumPeriodicCells) cells[d] = 1;  // all-pairs along d
+    cellSize(d) = domain_.length()(d) / cells[d];
+  }
+  const auto cellOf = [&](const Vec3& x) {
+    std::array<int, 3> c{};
+    for (int d = 0; d < 3; ++d) {
+      c[d] = std::clamp(static_cast<int>(std::floor((x(d) - domain_.lo(d)) / cellSize(d))), 0, cells[d] - 1);
+    }
+    return c;
+  };
+  const auto flat = [&](const std::array<int, 3>& c) { return (c[2] * cells[1] + c[1]) * cells[0] + c[0]; };
+
+  // Counting sort of particles into cells (deterministic order: by slot within a cell).
+  std::vector<int> start(static_cast<std::size_t>(cells[0]) * cells[1] * cells[2] + 1, 0), cellIndex(n);
+  for (std::size_t i = 0; i < n; ++i) ++start[(cellIndex[i] = flat(cellOf(particles.position[i]))) + 1];
+  for (std::size_t c = 1; c < start.size(); ++c) start[c] += start[c - 1];
+  std::vector<std::uint32_t> sorted(n);
+  std::vector<int> fill(start.begin(), start.end() - 1);
+  for (std::size_t i = 0; i < n; ++i) sorted[fill[cellIndex[i]]++] = static_cast<std::uint32_t>(i);
+
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::array<int, 3> ci = cellOf(particles.position[i]);
+    for (int dz = -1; dz <= 1; ++dz) {
+      for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) {
+          const std::array<int, 3> offset{dx, dy, dz};
+          std::array<int, 3> cj{};
+          Vec3 shift = Vec3::Zero();
+          bool inside = true;
+          for (int d = 0; d < 3; ++d) {
+            if (cells[d] == 1) {
+              if (offset[d] != 0) inside = false;  // a single cell is its own only neighbour
+              cj[d] = 0;
+              continue;
+            }
+            cj[d] = ci[d] + offset[d];
+            if (cj[d] < 0 || cj[d] >= cells[d]) {
+              if (!domain_.periodic[d]) { inside = false; continue; }
+              shift(d) = cj[d] < 0 ? -domain_.length()(d) : domain_.length()(d);
+              cj[d] = (cj[d] + cells[d]) % cells[d];
+            }
+          }
+          if (!inside) continue;
+          const int c = flat(cj);
+          for (int k = start[c]; k < start[c + 1]; ++k) {
+            const std::uint32_t j = sorted[k];
+            if (j <= i) continue;
+            // A single periodic cell along d: take the nearest image of j.
+            Vec3 s = shift;
+            for (int d = 0; d < 3; ++d) {
+              if (cells[d] == 1 && domain_.periodic[d]) {
+                const double L = domain_.length()(d), dd = particles.position[j](d) - particles.position[i](d);
+                s(d) = -L * std::round(dd / L);
+              }
+            }
+            const double reach = boundingRadius[i] + boundingRadius[j] + skin_;
+            if ((particles.position[j] + s - particles.position[i]).squaredNorm() < reach * reach) {
+              pairs_.push_back({static_cast<std::uint32_t>(i), j, s});
+            }
+          }
+        }
+      }
+    }
+  }
+  std::sort(pairs_.begin(), pairs_.end(),
+            [](const CandidatePair& x, const CandidatePair& y) { return x.a != y.a ? x.a < y.a : x.b < y.b; });
+}
+
+}  // namespace sqdem

@@ -1,0 +1,61 @@
+#include "sqdem/world/contact_model.hpp"
+
+#include <cmath>
+#include <numbers>
+
+namespace sqdem {
+
+ContactForce contactForce(const ContactModel& model, const ContactGeometry& geometry,
+                          const ContactKinematics& motion, Vec3& spring, double dt) {
+  const double delta = geometry.overlap;
+  const Vec3& n = geometry.normal;
+  double Rc, gamma, beta;
+  if (model.normal == NormalLaw::EllipticHertz) {
+    const double reference = motion.volumeRadiusB > 0.0 ? std::sqrt(motion.volumeRadiusA * motion.volumeRadiusB)
+                                                        : motion.volumeRadiusA;
+    const RelativeRadii radii = relativeRadii(geometry.curvatureA, geometry.curvatureB, model.capFactor * reference);
+    const HertzFactors f = hertzFactors(radii.ratio(), model.eccentricity);
+    Rc = radii.Rc;
+    gamma = f.gamma;
+    beta = f.beta;
+  } else {
+    const double Rstar = motion.volumeRadiusB > 0.0 ? motion.volumeRadiusA * motion.volumeRadiusB /
+                                                          (motion.volumeRadiusA + motion.volumeRadiusB)
+                                                    : motion.volumeRadiusA;
+    Rc = 0.5 * Rstar;
+    gamma = std::numbers::sqrt2;
+    beta = 2.0;
+  }
+  const double sqrtDelta = std::sqrt(delta);
+  const double elastic = 4.0 / 3.0 * model.effectiveModulus * std::sqrt(Rc) * gamma * delta * sqrtDelta;
+  const double Sn = 2.0 * model.effectiveModulus * gamma * std::sqrt(Rc) * sqrtDelta;  // dF/d(delta)
+  const double dampingScale = 2.0 * std::sqrt(5.0 / 6.0) * model.dampingRatio;
+  const double normalRate = -motion.relativeVelocity.dot(n);  // > 0 approaching
+  const double Fn = elastic + dampingScale * std::sqrt(motion.effectiveMass * Sn) * normalRate;
+
+  ContactForce out;
+  out.normal = Fn;
+  out.area = std::numbers::pi * Rc * beta * delta;
+  out.onB = Fn * n;
+  if (model.friction <= 0.0) return out;
+
+  // Tangential spring: keep it in the current tangent plane with its length, then add v_t dt.
+  const Vec3 vt = motion.relativeVelocity - motion.relativeVelocity.dot(n) * n;
+  const double length = spring.norm();
+  spring -= spring.dot(n) * n;
+  const double projected = spring.norm();
+  if (projected > 0.0) spring *= length / projected;
+  spring += vt * dt;
+  const double kt = 8.0 * model.effectiveShear * std::sqrt(out.area / std::numbers::pi);
+  const double etat = dampingScale * std::sqrt(motion.effectiveMass * kt);
+  Vec3 Ft = -kt * spring - etat * vt;  // on B
+  const double limit = model.friction * std::max(Fn, 0.0);
+  if (Ft.norm() > limit) {
+    Ft *= limit / Ft.norm();
+    spring = kt > 0.0 ? Vec3(-(Ft + etat * vt) / kt) : Vec3::Zero();
+  }
+  out.onB += Ft;
+  return out;
+}
+
+}  // namespace sqdem

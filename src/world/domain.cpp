@@ -1,0 +1,17 @@
+#include "sqdem/world/domain.hpp"
+
+#include <cmath>
+
+namespace sqdem {
+
+Vec3 Domain::wrap(Vec3 x) const {
+  for (int d = 0; d < 3; ++d) {
+    if (!periodic[d]) continue;
+    const double L = hi(d) - lo(d);
+    x(d) -= L * std::floor((x(d) - lo(d)) / L);
+    if (x(d) >= hi(d)) x(d) -= L;  // round-off at the upper bound
+  }
+  return x;
+}
+
+}  // namespace sqdem
