@@ -12,5 +12,6 @@ int validateTable1(const Arguments& args);
 int geometryProbe(const Arguments& args);
 int stickingVelocity(const Arguments& args);
 int contactDriver(const Arguments& args);
+int runCommand(const Arguments& args);
 
 }  // namespace sqdem::cli

@@ -13,6 +13,10 @@ constexpr const char* usage = R"(sqdem - DEM for superquadric and ellipsoidal pa
 usage: sqdem <command> [arguments]
 
 commands:
+  run <scene.yaml> [--threads N] [--out DIR]
+                         Run a DEM scene (YAML; keys in README.md "Scene files"): builds the
+                         particles, runs the stages, writes ParaView files (.pvd/.vtu/.vtp) and a
+                         CSV log to DIR (default out/<scene name>), prints a summary.
   validate table1        Reproduce Table 1 of the review (Kildashti et al. 2023, seed 004):
                          normalised elliptic Hertz force of two n = 6 superquadrics in three
                          poses, against the review's accurate model, FEM and simplified model.
@@ -49,11 +53,12 @@ int main(int argc, char** argv) {
     if (args[0] == "geometry") return sqdem::cli::geometryProbe(rest);
     if (args[0] == "sticking-velocity") return sqdem::cli::stickingVelocity(rest);
     if (args[0] == "contact") return sqdem::cli::contactDriver(rest);
+    if (args[0] == "run") return sqdem::cli::runCommand(rest);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "sqdem %s: error: %s\n", args[0].c_str(), e.what());
     return 1;
   }
-  std::fprintf(stderr, "sqdem: unknown command '%s' (allowed: validate, geometry, sticking-velocity, contact, help)\n",
+  std::fprintf(stderr, "sqdem: unknown command '%s' (allowed: run, validate, geometry, sticking-velocity, contact, help)\n",
                args[0].c_str());
   return 2;
 }

@@ -128,7 +128,7 @@ void World::computeForces() {
 
   // Serial reduction in key order: independent of the thread count.
   for (std::size_t i = 0; i < p.size(); ++i) {
-    p.force[i] = p.mass[i] * gravity_;
+    p.force[i] = p.mass[i] * (gravity_ - viscousDamping_ * p.velocity[i]);
     p.torque[i].setZero();
   }
   for (Wall& w : walls_) w.force.setZero();

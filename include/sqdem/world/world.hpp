@@ -69,6 +69,9 @@ class World {
   void addWall(const Wall& wall) { walls_.push_back(wall); }
 
   void setGravity(const Vec3& g) { gravity_ = g; }
+  /// Background drag F = -c m v (c in 1/s, translation only; 0 = off): settling in a viscous
+  /// medium with terminal velocity |g|/c, a declared packing aid.
+  void setViscousDamping(double c) { viscousDamping_ = c; }
   void setTimeStep(double dt) { dt_ = dt; }
   double timeStep() const { return dt_; }
   double time() const { return time_; }
@@ -110,6 +113,7 @@ class World {
   std::vector<Contact> contacts_;
   WorldStatistics statistics_;
   Vec3 gravity_ = Vec3::Zero();
+  double viscousDamping_ = 0.0;
   double dt_ = 0.0, time_ = 0.0;
   bool forcesCurrent_ = false;
 };

@@ -1,0 +1,96 @@
+#pragma once
+// A validated scene description (what a scene file declares; see examples/*.yaml and README.md
+// "Scene files" for every key with its unit). Loading checks everything before anything runs:
+// errors name the file, line, key and what is allowed (SceneError).
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "sqdem/mechanics/elliptic.hpp"
+#include "sqdem/world/contact_model.hpp"
+#include "sqdem/world/domain.hpp"
+#include "sqdem/world/world.hpp"
+
+namespace sqdem {
+
+class SceneError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct NamedMaterial {
+  std::string name;
+  Material material;
+};
+
+/// A shape family: fixed semi-axes, or a distribution of volume-equivalent radius and the
+/// aspect ratios b/a, c/a (002 Table 2 style), sampled per particle.
+struct ShapeFamily {
+  std::string name;
+  std::array<double, 2> volumeRadius{0.0, 0.0};  ///< [min, max] (m), uniform in radius
+  std::array<double, 2> aspectB{1.0, 1.0};       ///< b/a range
+  std::array<double, 2> aspectC{1.0, 1.0};       ///< c/a range
+  double n1 = 2.0, n2 = 2.0;                     ///< superquadric exponents
+};
+
+struct InteractionSpec {
+  std::uint32_t materialA = 0, materialB = 0;
+  NormalLaw normal = NormalLaw::EllipticHertz;
+  EccentricityMethod eccentricity = EccentricityMethod::Tabulated;
+  double capFactor = 10.0;
+  double stiffnessScale = 1.0;  ///< reduced-stiffness factor E_mod/E (001 Eq. 24)
+};
+
+struct WallSpec {
+  Vec3 point = Vec3::Zero(), normal = Vec3::UnitZ(), velocity = Vec3::Zero();
+  std::uint32_t material = 0;
+};
+
+struct InsertionSpec {
+  std::size_t count = 0;
+  std::uint32_t shape = 0, material = 0;
+  Vec3 lo = Vec3::Zero(), hi = Vec3::Zero();  ///< region for the centres (m)
+  bool randomOrientation = true;
+};
+
+struct StageSpec {
+  std::string name;
+  double duration = 0.0;            ///< simulated time limit (s)
+  double kineticEnergyRatio = 0.0;  ///< stop when E_kin / (sum m |g| R_vol) falls below (0: off)
+  double minimumDuration = 0.0;     ///< the stop criterion is checked only after this (s)
+  double viscousDamping = 0.0;      ///< background drag c (1/s), F = -c m v
+  std::optional<std::size_t> wall;  ///< wall moved in this stage
+  Vec3 wallVelocity = Vec3::Zero(); ///< its velocity during the stage (m/s)
+};
+
+struct OutputSpec {
+  std::size_t frames = 20;      ///< VTK frames per stage (plus the initial state)
+  std::size_t logEvery = 0;     ///< CSV row every N steps (0: 200 rows per stage)
+  bool contacts = true;         ///< write the contact network (.vtp)
+};
+
+struct Scene {
+  std::string path;
+  std::uint64_t seed = 1;
+  Domain domain;
+  Vec3 gravity = Vec3::Zero();
+  std::optional<double> timeStep;  ///< explicit (s); otherwise timeStepFraction x Rayleigh time
+  double timeStepFraction = 0.2;
+  double skin = 0.0;               ///< Verlet skin (m); 0: 0.2 x smallest volume radius
+  std::vector<NamedMaterial> materials;
+  std::vector<ShapeFamily> shapes;
+  std::vector<InteractionSpec> interactions;
+  std::vector<WallSpec> walls;
+  std::vector<InsertionSpec> insertions;
+  std::vector<StageSpec> stages;
+  OutputSpec output;
+};
+
+/// Reads and validates a scene file; throws SceneError("file:line: key: message").
+Scene loadScene(const std::string& path);
+
+}  // namespace sqdem

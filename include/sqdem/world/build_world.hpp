@@ -1,0 +1,15 @@
+#pragma once
+// Turns a validated Scene into a ready World: samples each particle's shape from its family,
+// inserts particles at random non-overlapping positions (bounding spheres, periodic images and
+// walls respected) with random orientations (uniform on SO(3)), sets the interaction table and
+// the time step. Deterministic for a given scene seed.
+
+#include "sqdem/io/scene.hpp"
+#include "sqdem/world/world.hpp"
+
+namespace sqdem {
+
+/// Throws SceneError (naming the insertion) when the region cannot hold the particles.
+World buildWorld(const Scene& scene);
+
+}  // namespace sqdem

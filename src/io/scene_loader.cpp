@@ -1,0 +1,331 @@
+// Scene files (YAML, yaml-cpp): every key is checked, unknown keys are errors, and every message
+// names file:line, the key and what is allowed. Keys and units: README.md "Scene files".
+
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <map>
+#include <sstream>
+
+#include "sqdem/geometry/superquadric.hpp"
+#include "sqdem/io/scene.hpp"
+
+namespace sqdem {
+namespace {
+
+class Reader {
+ public:
+  explicit Reader(std::string file) : file_(std::move(file)) {}
+
+  [[noreturn]] void fail(const YAML::Node& node, const std::string& key, const std::string& message) const {
+    std::ostringstream s;
+    s << file_;
+    if (node.IsDefined() && node.Mark().line >= 0) s << ":" << node.Mark().line + 1;
+    s << ": " << (key.empty() ? "" : "'" + key + "': ") << message;
+    throw SceneError(s.str());
+  }
+
+  void allowOnly(const YAML::Node& map, const std::string& where, std::initializer_list<const char*> keys) const {
+    if (!map.IsMap()) fail(map, where, "must be a mapping");
+    for (const auto& entry : map) {
+      const std::string key = entry.first.as<std::string>();
+      bool known = false;
+      for (const char* k : keys) known = known || key == k;
+      if (!known) {
+        std::string list;
+        for (const char* k : keys) list += std::string(list.empty() ? "" : ", ") + k;
+        fail(entry.first, where.empty() ? key : where + "." + key, "unknown key (allowed: " + list + ")");
+      }
+    }
+  }
+
+  double number(const YAML::Node& map, const std::string& key, const std::string& where) const {
+    const YAML::Node v = map[key];
+    if (!v) fail(map, where + "." + key, "missing (a number is required)");
+    return asNumber(v, where + "." + key);
+  }
+  double number(const YAML::Node& map, const std::string& key, const std::string& where, double fallback) const {
+    return map[key] ? asNumber(map[key], where + "." + key) : fallback;
+  }
+  double asNumber(const YAML::Node& v, const std::string& key) const {
+    double x;
+    if (!v.IsScalar() || !YAML::convert<double>::decode(v, x) || !std::isfinite(x)) fail(v, key, "must be a finite number");
+    return x;
+  }
+  double positive(const YAML::Node& map, const std::string& key, const std::string& where, const char* unit) const {
+    const double x = number(map, key, where);
+    if (!(x > 0.0)) fail(map[key], where + "." + key, std::string("must be > 0 (") + unit + ")");
+    return x;
+  }
+  Vec3 vector(const YAML::Node& map, const std::string& key, const std::string& where) const {
+    const YAML::Node v = map[key];
+    if (!v) fail(map, where + "." + key, "missing ([x, y, z] required)");
+    if (!v.IsSequence() || v.size() != 3) fail(v, where + "." + key, "must be a list of three numbers [x, y, z]");
+    return {asNumber(v[0], where + "." + key), asNumber(v[1], where + "." + key), asNumber(v[2], where + "." + key)};
+  }
+  std::array<double, 2> range(const YAML::Node& v, const std::string& key) const {
+    if (v.IsScalar()) {
+      const double x = asNumber(v, key);
+      return {x, x};
+    }
+    if (!v.IsSequence() || v.size() != 2) fail(v, key, "must be a number or a range [min, max]");
+    const std::array<double, 2> r{asNumber(v[0], key), asNumber(v[1], key)};
+    if (!(r[0] > 0.0 && r[0] <= r[1])) fail(v, key, "needs 0 < min <= max");
+    return r;
+  }
+  std::string text(const YAML::Node& map, const std::string& key, const std::string& where) const {
+    const YAML::Node v = map[key];
+    if (!v || !v.IsScalar()) fail(v ? v : map, where + "." + key, "missing or not a string");
+    return v.as<std::string>();
+  }
+  bool flag(const YAML::Node& map, const std::string& key, const std::string& where, bool fallback) const {
+    if (!map[key]) return fallback;
+    bool b;
+    if (!YAML::convert<bool>::decode(map[key], b)) fail(map[key], where + "." + key, "must be true or false");
+    return b;
+  }
+  template <typename T>
+  std::uint32_t lookup(const YAML::Node& node, const std::string& key, const std::vector<T>& items, const char* what) const {
+    const std::string name = node.IsScalar() ? node.as<std::string>() : "";
+    std::string list;
+    for (std::size_t i = 0; i < items.size(); ++i) {
+      if (items[i].name == name) return static_cast<std::uint32_t>(i);
+      list += (i ? ", " : "") + items[i].name;
+    }
+    fail(node, key, "unknown " + std::string(what) + " '" + name + "' (defined: " + list + ")");
+  }
+
+ private:
+  std::string file_;
+};
+
+Material readMaterial(const Reader& r, const YAML::Node& m, const std::string& where) {
+  r.allowOnly(m, where, {"youngs_modulus", "poisson_ratio", "density", "friction", "restitution"});
+  Material out;
+  out.youngsModulus = r.positive(m, "youngs_modulus", where, "Pa");
+  out.poissonRatio = r.number(m, "poisson_ratio", where);
+  if (!(out.poissonRatio > -1.0 && out.poissonRatio < 0.5)) r.fail(m["poisson_ratio"], where + ".poisson_ratio", "must be in (-1, 0.5)");
+  out.density = r.positive(m, "density", where, "kg/m^3");
+  out.friction = r.number(m, "friction", where, 0.0);
+  if (out.friction < 0.0) r.fail(m["friction"], where + ".friction", "must be >= 0");
+  out.restitution = r.number(m, "restitution", where, 1.0);
+  if (!(out.restitution > 0.0 && out.restitution <= 1.0)) r.fail(m["restitution"], where + ".restitution", "must be in (0, 1]");
+  return out;
+}
+
+ShapeFamily readShape(const Reader& r, const YAML::Node& s, const std::string& name) {
+  const std::string where = "shapes." + name;
+  r.allowOnly(s, where, {"semi_axes", "volume_radius", "aspect_b", "aspect_c", "n1", "n2"});
+  ShapeFamily f;
+  f.name = name;
+  f.n1 = r.number(s, "n1", where, 2.0);
+  f.n2 = r.number(s, "n2", where, 2.0);
+  if (!(f.n1 >= 2.0 && f.n1 <= 50.0) || !(f.n2 >= 2.0 && f.n2 <= 50.0)) {
+    r.fail(s, where, "exponents n1, n2 must be in [2, 50] (convex superquadrics)");
+  }
+  if (s["semi_axes"]) {
+    if (s["volume_radius"] || s["aspect_b"] || s["aspect_c"]) r.fail(s, where, "give either semi_axes or volume_radius + aspect_b/aspect_c");
+    const Vec3 a = r.vector(s, "semi_axes", where);
+    if (!(a.minCoeff() > 0.0)) r.fail(s["semi_axes"], where + ".semi_axes", "must be > 0 (m)");
+    const double rv = Superquadric(a.x(), a.y(), a.z(), f.n1, f.n2).volumeEquivalentRadius();
+    f.volumeRadius = {rv, rv};
+    f.aspectB = {a.y() / a.x(), a.y() / a.x()};
+    f.aspectC = {a.z() / a.x(), a.z() / a.x()};
+    return f;
+  }
+  if (!s["volume_radius"]) r.fail(s, where, "needs semi_axes [a, b, c] or volume_radius (m, number or [min, max])");
+  f.volumeRadius = r.range(s["volume_radius"], where + ".volume_radius");
+  if (s["aspect_b"]) f.aspectB = r.range(s["aspect_b"], where + ".aspect_b");
+  if (s["aspect_c"]) f.aspectC = r.range(s["aspect_c"], where + ".aspect_c");
+  return f;
+}
+
+Scene parseScene(const std::string& path, const YAML::Node& root) {
+  const Reader r(path);
+  Scene scene;
+  scene.path = path;
+  r.allowOnly(root, "", {"seed", "domain", "gravity", "time_step", "time_step_fraction", "skin", "materials",
+                         "shapes", "interactions", "walls", "insert", "stages", "output"});
+  if (root["seed"]) {
+    const double seed = r.asNumber(root["seed"], "seed");
+    if (seed < 0 || seed != std::floor(seed)) r.fail(root["seed"], "seed", "must be a non-negative integer");
+    scene.seed = static_cast<std::uint64_t>(seed);
+  }
+
+  const YAML::Node domain = root["domain"];
+  if (!domain) r.fail(root, "domain", "missing ({lo: [x,y,z], hi: [x,y,z], periodic: [x, y]})");
+  r.allowOnly(domain, "domain", {"lo", "hi", "periodic"});
+  scene.domain.lo = r.vector(domain, "lo", "domain");
+  scene.domain.hi = r.vector(domain, "hi", "domain");
+  if (!((scene.domain.hi - scene.domain.lo).minCoeff() > 0.0)) r.fail(domain, "domain", "needs hi > lo in x, y and z");
+  if (const YAML::Node p = domain["periodic"]) {
+    if (!p.IsSequence()) r.fail(p, "domain.periodic", "must be a list of directions from x, y, z");
+    for (const auto& d : p) {
+      const std::string axis = d.as<std::string>();
+      if (axis != "x" && axis != "y" && axis != "z") r.fail(d, "domain.periodic", "directions are x, y, z (got '" + axis + "')");
+      scene.domain.periodic[axis[0] - 'x'] = true;
+    }
+  }
+  if (root["gravity"]) scene.gravity = r.vector(root, "gravity", "");
+
+  if (const YAML::Node dt = root["time_step"]) {
+    if (!(dt.IsScalar() && dt.as<std::string>() == "auto")) {
+      scene.timeStep = r.asNumber(dt, "time_step");
+      if (!(*scene.timeStep > 0.0)) r.fail(dt, "time_step", "must be > 0 (s) or 'auto'");
+    }
+  }
+  scene.timeStepFraction = r.number(root, "time_step_fraction", "", 0.2);
+  if (!(scene.timeStepFraction > 0.0 && scene.timeStepFraction <= 1.0)) r.fail(root["time_step_fraction"], "time_step_fraction", "must be in (0, 1]");
+  scene.skin = r.number(root, "skin", "", 0.0);
+  if (scene.skin < 0.0) r.fail(root["skin"], "skin", "must be >= 0 (m)");
+
+  const YAML::Node materials = root["materials"];
+  if (!materials || !materials.IsMap() || materials.size() == 0) r.fail(materials ? materials : root, "materials", "missing (a mapping name -> properties)");
+  for (const auto& m : materials) {
+    const std::string name = m.first.as<std::string>();
+    scene.materials.push_back({name, readMaterial(r, m.second, "materials." + name)});
+  }
+  const YAML::Node shapes = root["shapes"];
+  if (!shapes || !shapes.IsMap() || shapes.size() == 0) r.fail(shapes ? shapes : root, "shapes", "missing (a mapping name -> shape)");
+  for (const auto& s : shapes) scene.shapes.push_back(readShape(r, s.second, s.first.as<std::string>()));
+
+  // Interactions: every material pair must be declared exactly once.
+  const std::size_t nm = scene.materials.size();
+  std::vector<bool> declared(nm * nm, false);
+  const YAML::Node interactions = root["interactions"];
+  if (!interactions || !interactions.IsSequence()) r.fail(interactions ? interactions : root, "interactions", "missing (a list, one entry per material pair)");
+  for (std::size_t k = 0; k < interactions.size(); ++k) {
+    const YAML::Node in = interactions[k];
+    const std::string where = "interactions[" + std::to_string(k) + "]";
+    r.allowOnly(in, where, {"materials", "normal", "eccentricity", "cap_factor", "reduced_stiffness"});
+    const YAML::Node pair = in["materials"];
+    if (!pair || !pair.IsSequence() || pair.size() != 2) r.fail(pair ? pair : in, where + ".materials", "must be a pair [material, material]");
+    InteractionSpec spec;
+    spec.materialA = r.lookup(pair[0], where + ".materials", scene.materials, "material");
+    spec.materialB = r.lookup(pair[1], where + ".materials", scene.materials, "material");
+    if (declared[spec.materialA * nm + spec.materialB]) r.fail(pair, where + ".materials", "this pair is declared twice");
+    declared[spec.materialA * nm + spec.materialB] = declared[spec.materialB * nm + spec.materialA] = true;
+    const std::string normal = in["normal"] ? in["normal"].as<std::string>() : "elliptic_hertz";
+    if (normal == "elliptic_hertz") spec.normal = NormalLaw::EllipticHertz;
+    else if (normal == "volume_sphere_hertz") spec.normal = NormalLaw::VolumeSphereHertz;
+    else r.fail(in["normal"], where + ".normal", "allowed: elliptic_hertz, volume_sphere_hertz");
+    const std::string e2 = in["eccentricity"] ? in["eccentricity"].as<std::string>() : "tabulated";
+    if (e2 == "tabulated") spec.eccentricity = EccentricityMethod::Tabulated;
+    else if (e2 == "exact") spec.eccentricity = EccentricityMethod::Exact;
+    else if (e2 == "explicit") spec.eccentricity = EccentricityMethod::Explicit;
+    else r.fail(in["eccentricity"], where + ".eccentricity", "allowed: tabulated, exact, explicit");
+    spec.capFactor = r.number(in, "cap_factor", where, 10.0);
+    if (!(spec.capFactor > 0.0)) r.fail(in["cap_factor"], where + ".cap_factor", "must be > 0");
+    spec.stiffnessScale = r.number(in, "reduced_stiffness", where, 1.0);
+    if (!(spec.stiffnessScale > 0.0 && spec.stiffnessScale <= 1.0)) r.fail(in["reduced_stiffness"], where + ".reduced_stiffness", "must be in (0, 1] (E_mod / E)");
+    scene.interactions.push_back(spec);
+  }
+  for (std::size_t a = 0; a < nm; ++a) {
+    for (std::size_t b = a; b < nm; ++b) {
+      if (!declared[a * nm + b]) {
+        r.fail(interactions, "interactions", "no entry for the material pair [" + scene.materials[a].name + ", " + scene.materials[b].name + "]");
+      }
+    }
+  }
+
+  if (const YAML::Node walls = root["walls"]) {
+    if (!walls.IsSequence()) r.fail(walls, "walls", "must be a list");
+    for (std::size_t k = 0; k < walls.size(); ++k) {
+      const std::string where = "walls[" + std::to_string(k) + "]";
+      r.allowOnly(walls[k], where, {"point", "normal", "velocity", "material"});
+      WallSpec w;
+      w.point = r.vector(walls[k], "point", where);
+      w.normal = r.vector(walls[k], "normal", where);
+      if (!(w.normal.norm() > 0.0)) r.fail(walls[k]["normal"], where + ".normal", "must be non-zero");
+      w.normal.normalize();
+      if (walls[k]["velocity"]) w.velocity = r.vector(walls[k], "velocity", where);
+      if (!walls[k]["material"]) r.fail(walls[k], where + ".material", "missing");
+      w.material = r.lookup(walls[k]["material"], where + ".material", scene.materials, "material");
+      scene.walls.push_back(w);
+    }
+  }
+
+  const YAML::Node insert = root["insert"];
+  if (!insert || !insert.IsSequence() || insert.size() == 0) r.fail(insert ? insert : root, "insert", "missing (a list of {count, shape, material, region})");
+  for (std::size_t k = 0; k < insert.size(); ++k) {
+    const std::string where = "insert[" + std::to_string(k) + "]";
+    const YAML::Node in = insert[k];
+    r.allowOnly(in, where, {"count", "shape", "material", "region", "random_orientation"});
+    InsertionSpec spec;
+    const double count = r.number(in, "count", where);
+    if (!(count >= 1 && count <= 1e7) || count != std::floor(count)) r.fail(in["count"], where + ".count", "must be an integer in [1, 1e7]");
+    spec.count = static_cast<std::size_t>(count);
+    if (!in["shape"]) r.fail(in, where + ".shape", "missing");
+    if (!in["material"]) r.fail(in, where + ".material", "missing");
+    spec.shape = r.lookup(in["shape"], where + ".shape", scene.shapes, "shape");
+    spec.material = r.lookup(in["material"], where + ".material", scene.materials, "material");
+    const YAML::Node region = in["region"];
+    if (!region) r.fail(in, where + ".region", "missing ({lo: [x,y,z], hi: [x,y,z]})");
+    r.allowOnly(region, where + ".region", {"lo", "hi"});
+    spec.lo = r.vector(region, "lo", where + ".region");
+    spec.hi = r.vector(region, "hi", where + ".region");
+    if (!((spec.hi - spec.lo).minCoeff() > 0.0)) r.fail(region, where + ".region", "needs hi > lo");
+    spec.randomOrientation = r.flag(in, "random_orientation", where, true);
+    scene.insertions.push_back(spec);
+  }
+
+  const YAML::Node stages = root["stages"];
+  if (!stages || !stages.IsSequence() || stages.size() == 0) r.fail(stages ? stages : root, "stages", "missing (a list of {name, duration, stop})");
+  for (std::size_t k = 0; k < stages.size(); ++k) {
+    const std::string where = "stages[" + std::to_string(k) + "]";
+    const YAML::Node st = stages[k];
+    r.allowOnly(st, where, {"name", "duration", "stop", "move_wall", "viscous_damping"});
+    StageSpec spec;
+    spec.name = st["name"] ? r.text(st, "name", where) : "stage" + std::to_string(k);
+    spec.duration = r.positive(st, "duration", where, "s");
+    spec.viscousDamping = r.number(st, "viscous_damping", where, 0.0);
+    if (spec.viscousDamping < 0.0) r.fail(st["viscous_damping"], where + ".viscous_damping", "must be >= 0 (1/s)");
+    if (const YAML::Node stop = st["stop"]) {
+      r.allowOnly(stop, where + ".stop", {"kinetic_energy_ratio", "after"});
+      spec.kineticEnergyRatio = r.positive(stop, "kinetic_energy_ratio", where + ".stop", "-");
+      spec.minimumDuration = r.number(stop, "after", where + ".stop", 0.0);
+    }
+    if (const YAML::Node move = st["move_wall"]) {
+      r.allowOnly(move, where + ".move_wall", {"wall", "velocity"});
+      const double w = r.number(move, "wall", where + ".move_wall");
+      if (w < 0 || w >= static_cast<double>(scene.walls.size()) || w != std::floor(w)) {
+        r.fail(move["wall"], where + ".move_wall.wall", "must be a wall index in [0, " + std::to_string(scene.walls.size()) + ")");
+      }
+      spec.wall = static_cast<std::size_t>(w);
+      spec.wallVelocity = r.vector(move, "velocity", where + ".move_wall");
+    }
+    scene.stages.push_back(spec);
+  }
+
+  if (const YAML::Node out = root["output"]) {
+    r.allowOnly(out, "output", {"frames", "log_every", "contacts"});
+    const double frames = r.number(out, "frames", "output", 20.0);
+    if (!(frames >= 0 && frames <= 1e5) || frames != std::floor(frames)) r.fail(out["frames"], "output.frames", "must be an integer in [0, 1e5]");
+    scene.output.frames = static_cast<std::size_t>(frames);
+    const double every = r.number(out, "log_every", "output", 0.0);
+    if (every < 0 || every != std::floor(every)) r.fail(out["log_every"], "output.log_every", "must be a non-negative integer (steps)");
+    scene.output.logEvery = static_cast<std::size_t>(every);
+    scene.output.contacts = r.flag(out, "contacts", "output", true);
+  }
+  return scene;
+}
+
+}  // namespace
+
+Scene loadScene(const std::string& path) {
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(path);
+  } catch (const YAML::BadFile&) {
+    throw SceneError(path + ": cannot open the scene file");
+  } catch (const YAML::ParserException& e) {
+    throw SceneError(path + ":" + std::to_string(e.mark.line + 1) + ": not valid YAML: " + e.msg);
+  }
+  try {
+    return parseScene(path, root);
+  } catch (const YAML::Exception& e) {  // a wrong node type where a string was expected
+    throw SceneError(path + ":" + std::to_string(e.mark.line + 1) + ": " + e.msg);
+  }
+}
+
+}  // namespace sqdem

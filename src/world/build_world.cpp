@@ -1,0 +1,112 @@
+#include "sqdem/world/build_world.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <random>
+
+namespace sqdem {
+namespace {
+
+/// Shoemake's uniform random rotation.
+Quat randomRotation(std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const double u1 = u(rng), u2 = 2.0 * std::numbers::pi * u(rng), u3 = 2.0 * std::numbers::pi * u(rng);
+  const double a = std::sqrt(1.0 - u1), b = std::sqrt(u1);
+  return Quat(a * std::sin(u2), a * std::cos(u2), b * std::sin(u3), b * std::cos(u3)).normalized();
+}
+
+double sample(std::mt19937_64& rng, const std::array<double, 2>& range) {
+  return range[0] == range[1] ? range[0] : std::uniform_real_distribution<double>(range[0], range[1])(rng);
+}
+
+/// A superquadric of the family with the sampled volume-equivalent radius and aspect ratios.
+Superquadric sampleShape(std::mt19937_64& rng, const ShapeFamily& f) {
+  const double radius = sample(rng, f.volumeRadius), b = sample(rng, f.aspectB), c = sample(rng, f.aspectC);
+  const double unit = Superquadric(1.0, b, c, f.n1, f.n2).volumeEquivalentRadius();
+  const double s = radius / unit;
+  return Superquadric(s, s * b, s * c, f.n1, f.n2);
+}
+
+Vec3 minimumImage(Vec3 d, const Domain& domain) {
+  for (int k = 0; k < 3; ++k) {
+    if (domain.periodic[k]) d(k) -= domain.length()(k) * std::round(d(k) / domain.length()(k));
+  }
+  return d;
+}
+
+}  // namespace
+
+World buildWorld(const Scene& scene) {
+  std::mt19937_64 rng(scene.seed);
+  std::vector<Superquadric> shapes;
+  std::vector<std::uint32_t> materialOf;
+  std::vector<Vec3> centres;
+  std::vector<Quat> orientations;
+  std::vector<double> radii;
+  for (std::size_t k = 0; k < scene.insertions.size(); ++k) {
+    const InsertionSpec& in = scene.insertions[k];
+    std::uniform_real_distribution<double> ux(in.lo.x(), in.hi.x()), uy(in.lo.y(), in.hi.y()), uz(in.lo.z(), in.hi.z());
+    // Sample every shape first and place the largest first (random sequential addition then
+    // reaches much higher loose fractions for polydisperse sets).
+    std::vector<std::pair<Superquadric, Quat>> batch;
+    for (std::size_t n = 0; n < in.count; ++n) {
+      const Superquadric shape = sampleShape(rng, scene.shapes[in.shape]);
+      batch.emplace_back(shape, in.randomOrientation ? randomRotation(rng) : Quat::Identity());
+    }
+    std::stable_sort(batch.begin(), batch.end(),
+                     [](const auto& x, const auto& y) { return x.first.boundingRadius() > y.first.boundingRadius(); });
+    for (std::size_t n = 0; n < batch.size(); ++n) {
+      const auto& [shape, q] = batch[n];
+      const double r = shape.boundingRadius();
+      bool placed = false;
+      for (int attempt = 0; attempt < 10000 && !placed; ++attempt) {
+        const Vec3 x = scene.domain.wrap(Vec3(ux(rng), uy(rng), uz(rng)));
+        placed = std::all_of(scene.walls.begin(), scene.walls.end(),
+                             [&](const WallSpec& w) { return (x - w.point).dot(w.normal) > r; });
+        for (std::size_t j = 0; placed && j < centres.size(); ++j) {
+          placed = minimumImage(x - centres[j], scene.domain).norm() > r + radii[j];
+        }
+        if (placed) {
+          shapes.push_back(shape);
+          materialOf.push_back(in.material);
+          centres.push_back(x);
+          orientations.push_back(q);
+          radii.push_back(r);
+        }
+      }
+      if (!placed) {
+        throw SceneError(scene.path + ": insert[" + std::to_string(k) + "]: placed only " + std::to_string(n) + " of " +
+                         std::to_string(in.count) + " particles without overlap; enlarge the region or lower the count");
+      }
+    }
+  }
+
+  std::vector<Material> materials;
+  for (const NamedMaterial& m : scene.materials) materials.push_back(m.material);
+  const double smallest = shapes.empty() ? 0.0 : std::min_element(shapes.begin(), shapes.end(), [](const auto& a, const auto& b) {
+                                                   return a.volumeEquivalentRadius() < b.volumeEquivalentRadius();
+                                                 })->volumeEquivalentRadius();
+  World world(shapes, materials, scene.domain, scene.skin > 0.0 ? scene.skin : 0.2 * smallest);
+  double minScale = 1.0;
+  for (const InteractionSpec& in : scene.interactions) {
+    ContactModel model = world.defaultContactModel(in.materialA, in.materialB);
+    model.normal = in.normal;
+    model.eccentricity = in.eccentricity;
+    model.capFactor = in.capFactor;
+    model.effectiveModulus *= in.stiffnessScale;  // 001 Eq. 24 (no adhesion: gamma unchanged)
+    model.effectiveShear *= in.stiffnessScale;
+    minScale = std::min(minScale, in.stiffnessScale);
+    world.setContactModel(in.materialA, in.materialB, model);
+  }
+  for (const WallSpec& w : scene.walls) world.addWall({Plane{w.point, w.normal}, w.velocity, w.material});
+  for (std::size_t i = 0; i < shapes.size(); ++i) {
+    world.addParticle(static_cast<std::uint32_t>(i), materialOf[i], centres[i], orientations[i]);
+  }
+  // Rayleigh time scales as E^-1/2: the reduced stiffness lengthens the stable step.
+  world.setTimeStep(scene.timeStep ? *scene.timeStep
+                                   : scene.timeStepFraction * world.rayleighTimeStep() / std::sqrt(minScale));
+  return world;
+}
+
+}  // namespace sqdem

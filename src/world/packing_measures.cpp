@@ -1,0 +1,54 @@
+#include "sqdem/world/packing_measures.hpp"
+
+#include <algorithm>
+
+
+namespace sqdem {
+
+std::vector<int> coordinationNumbers(const World& world) {
+  std::vector<int> z(world.particles().size(), 0);
+  for (const Contact& c : world.contacts()) {
+    if (c.onWall()) continue;
+    ++z[c.a];
+    ++z[c.b];
+  }
+  return z;
+}
+
+PackingMeasures measurePacking(const World& world) {
+  const ParticleStore& p = world.particles();
+  PackingMeasures m;
+  if (p.size() == 0) return m;
+  const Domain& d = world.domain();
+  const double bottom = d.lo.z();
+  double top = bottom, rMax = 0.0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const double r = world.shapes()[p.shape[i]].boundingRadius();
+    top = std::max(top, p.position[i].z() + r);
+    rMax = std::max(rMax, r);
+  }
+  m.bedHeight = top - bottom;
+  double lo = bottom + 2.0 * rMax, hi = top - 2.0 * rMax;
+  if (hi - lo < 2.0 * rMax) lo = bottom, hi = top;
+  double volume = 0.0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.position[i].z() >= lo && p.position[i].z() < hi) volume += world.shapes()[p.shape[i]].volume();
+  }
+  m.slabHeight = hi - lo;
+  m.solidFraction = volume / (d.length().x() * d.length().y() * m.slabHeight);
+
+  const std::vector<int> z = coordinationNumbers(world);
+  long total = 0, nonRattlerTotal = 0, nonRattlers = 0;
+  for (const int zi : z) {
+    total += zi;
+    if (zi >= 2) {
+      nonRattlerTotal += zi;
+      ++nonRattlers;
+    }
+  }
+  m.meanCoordination = static_cast<double>(total) / static_cast<double>(z.size());
+  m.meanCoordinationNonRattlers = nonRattlers ? static_cast<double>(nonRattlerTotal) / nonRattlers : 0.0;
+  return m;
+}
+
+}  // namespace sqdem
