@@ -1,0 +1,121 @@
+// The engine end to end on small scenes: thread-count independence (bitwise), static
+// equilibrium of a resting bed, and the scene loader's error messages.
+
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "sqdem/io/scene.hpp"
+#include "sqdem/world/build_world.hpp"
+
+namespace sqdem {
+namespace {
+
+std::string writeScene(const std::string& name, const std::string& text) {
+  const auto path = std::filesystem::temp_directory_path() / ("sqdem_test_" + name + ".yaml");
+  std::ofstream(path) << text;
+  return path.string();
+}
+
+// A small poured bed of ellipsoids in a box periodic in x and y (SI units).
+const char* bedScene = R"(seed: 7
+domain: {lo: [0, 0, 0], hi: [6.0e-3, 6.0e-3, 12.0e-3], periodic: [x, y]}
+gravity: [0, 0, -9.81]
+time_step: 2.0e-6
+materials:
+  glass: {youngs_modulus: 1.0e7, poisson_ratio: 0.3, density: 2500, friction: 0.4, restitution: 0.3}
+shapes:
+  grains: {volume_radius: [0.4e-3, 0.6e-3], aspect_b: [0.6, 1.2], aspect_c: [0.6, 1.2]}
+interactions:
+  - materials: [glass, glass]
+walls:
+  - {point: [0, 0, 0], normal: [0, 0, 1], material: glass}
+insert:
+  - {count: 60, shape: grains, material: glass, region: {lo: [0, 0, 1.0e-3], hi: [6.0e-3, 6.0e-3, 11.0e-3]}}
+stages:
+  - {name: settle, duration: 0.2}
+)";
+
+struct BedState {
+  std::vector<Vec3> positions;
+  std::size_t contacts;
+};
+
+BedState runBed(int threads, int steps) {
+  omp_set_num_threads(threads);
+  const Scene scene = loadScene(writeScene("bed", bedScene));
+  World world = buildWorld(scene);
+  world.setGravity(scene.gravity);
+  world.setViscousDamping(50.0);  // terminal velocity 0.2 m/s: the bed forms within the run
+  for (int s = 0; s < steps; ++s) world.step();
+  return {world.particles().position, world.contacts().size()};
+}
+
+// DESIGN.md §3: contact-then-reduce in a fixed order, so 1 and 2 threads give identical bits.
+TEST(Engine, ResultsDoNotDependOnTheThreadCount) {
+  const BedState a = runBed(1, 40000), b = runBed(2, 40000);
+  ASSERT_GT(a.contacts, 40u);  // the run exercises many contacts
+  const std::vector<Vec3>&one = a.positions, &two = b.positions;
+  ASSERT_EQ(one.size(), two.size());
+  for (std::size_t i = 0; i < one.size(); ++i) {
+    for (int d = 0; d < 3; ++d) ASSERT_EQ(one[i](d), two[i](d)) << "particle " << i;
+  }
+}
+
+// Newton's third law and equilibrium: once the bed is at rest, the bottom wall carries the
+// weight of all particles, sum m g, within 0.1 %.
+TEST(Engine, RestingBedWallForceEqualsWeight) {
+  const Scene scene = loadScene(writeScene("bed", bedScene));
+  World world = buildWorld(scene);
+  world.setGravity(scene.gravity);
+  world.setViscousDamping(200.0);  // pour gently,
+  for (int s = 0; s < 40000; ++s) world.step();
+  world.setViscousDamping(0.0);    // then rest under contact damping alone
+  double weight = 0.0;
+  for (double m : world.particles().mass) weight += m * 9.81;
+  double error = 1.0;
+  for (int s = 0; s < 200000 && error > 1e-4; ++s) {
+    world.step();
+    if (s % 1000 == 0) error = std::abs(-world.walls()[0].force.z() - weight) / weight;
+  }
+  std::printf("wall force / weight - 1 = %.3g, kinetic energy %.3g J, %zu contacts\n",
+              -world.walls()[0].force.z() / weight - 1.0, world.kineticEnergy(), world.contacts().size());
+  EXPECT_LT(error, 1e-3);
+  EXPECT_EQ(world.statistics().detectorFailures, 0);
+}
+
+void expectSceneError(const std::string& text, const std::string& expected) {
+  const std::string path = writeScene("bad", text);
+  try {
+    loadScene(path);
+    ADD_FAILURE() << "no error for: " << expected;
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+  }
+}
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  text.replace(text.find(from), from.size(), to);
+  return text;
+}
+
+TEST(Engine, SceneErrorsNameLineKeyAndWhatIsAllowed) {
+  expectSceneError(replaced(bedScene, "seed: 7", "seed: 7\ncolour: red"), ":2: 'colour': unknown key (allowed: seed,");
+  expectSceneError(replaced(bedScene, "restitution: 0.3", "restitution: 1.5"), ":6: 'materials.glass.restitution': must be in (0, 1]");
+  expectSceneError(replaced(bedScene, "density: 2500", "density: heavy"), "'materials.glass.density': must be a finite number");
+  expectSceneError(replaced(bedScene, "shape: grains", "shape: pebbles"), "unknown shape 'pebbles' (defined: grains)");
+  expectSceneError(replaced(bedScene, "  - materials: [glass, glass]\n", "  - materials: [glass, glass]\n    normal: dmt\n"),
+                   "'interactions[0].normal': allowed: elliptic_hertz, volume_sphere_hertz");
+  expectSceneError(replaced(bedScene, "periodic: [x, y]", "periodic: [x, w]"), "'domain.periodic': directions are x, y, z");
+  expectSceneError(replaced(bedScene, "{name: settle, duration: 0.2}", "{name: settle}"), "'stages[0].duration': missing");
+  expectSceneError("seed: [1", "not valid YAML");
+  // A region too small for the particles is reported before anything runs.
+  const Scene crowded = loadScene(writeScene("crowded", replaced(bedScene, "count: 60", "count: 5000")));
+  EXPECT_THROW(buildWorld(crowded), SceneError);
+}
+
+}  // namespace
+}  // namespace sqdem
