@@ -111,11 +111,17 @@ int runScene(const std::string& scenePath, fs::path outDir, int threads) {
       }
       if (s % logEvery == 0) log.row(world, totalSteps, stage.name);
       if (frameEvery && s % frameEvery == 0) vtk.writeFrame(world);
-      if (stage.kineticEnergyRatio > 0.0 && s % 100 == 0 && world.time() - stageStart >= stage.minimumDuration &&
-          kineticEnergyRatio(world, scene.gravity) < stage.kineticEnergyRatio) {
-        reason = "kinetic energy ratio below " + std::to_string(stage.kineticEnergyRatio);
-        if (!frameEvery || s % frameEvery != 0) vtk.writeFrame(world);
-        break;
+      if (s % 10 == 0 && world.time() - stageStart >= stage.minimumDuration) {
+        if (stage.kineticEnergyRatio > 0.0 && s % 100 == 0 &&
+            kineticEnergyRatio(world, scene.gravity) < stage.kineticEnergyRatio) {
+          reason = "kinetic energy ratio below " + std::to_string(stage.kineticEnergyRatio);
+        } else if (stage.wallPressure > 0.0 && wallPressure(world, stage.pressureWall) >= stage.wallPressure) {
+          reason = "wall " + std::to_string(stage.pressureWall) + " pressure reached " + std::to_string(stage.wallPressure) + " Pa";
+        }
+        if (reason != "duration reached") {
+          if (!frameEvery || s % frameEvery != 0) vtk.writeFrame(world);
+          break;
+        }
       }
       const auto now = Clock::now();
       if (terminal && seconds(now - lastProgress) > 0.5) {
@@ -129,9 +135,10 @@ int runScene(const std::string& scenePath, fs::path outDir, int threads) {
     log.row(world, totalSteps, stage.name);
     log.flush();
     const PackingMeasures m = measurePacking(world);
-    std::printf("stage '%s': t = %.4g s, %s; solid fraction %.4f, mean coordination %.3f, E_kin ratio %.3g\n",
+    std::printf("stage '%s': t = %.4g s, %s; solid fraction %.4f, mean coordination %.3f, E_kin %.3g J\n",
                 stage.name.c_str(), world.time(), reason.c_str(), m.solidFraction, m.meanCoordination,
-                kineticEnergyRatio(world, scene.gravity));
+                world.kineticEnergy());
+    if (m.betweenWallsFraction > 0.0) std::printf("  solid fraction between the walls %.4f\n", m.betweenWallsFraction);
   }
   const double wall = seconds(Clock::now() - start);
   const WorldStatistics& st = world.statistics();
@@ -144,6 +151,7 @@ int runScene(const std::string& scenePath, fs::path outDir, int threads) {
               st.detectorFailures, st.deepOverlaps);
   std::printf("final: solid fraction %.4f (bulk slab %.3g m), mean coordination %.3f (%.3f without rattlers), bed height %.4g m\n",
               m.solidFraction, m.slabHeight, m.meanCoordination, m.meanCoordinationNonRattlers, m.bedHeight);
+  if (m.betweenWallsFraction > 0.0) std::printf("final: solid fraction between the walls %.4f\n", m.betweenWallsFraction);
   std::printf("ParaView: open %s and %s\n", (outDir / (name + "_particles.pvd")).string().c_str(),
               (outDir / (name + "_contacts.pvd")).string().c_str());
   return 0;

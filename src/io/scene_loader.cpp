@@ -281,8 +281,22 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
     spec.viscousDamping = r.number(st, "viscous_damping", where, 0.0);
     if (spec.viscousDamping < 0.0) r.fail(st["viscous_damping"], where + ".viscous_damping", "must be >= 0 (1/s)");
     if (const YAML::Node stop = st["stop"]) {
-      r.allowOnly(stop, where + ".stop", {"kinetic_energy_ratio", "after"});
-      spec.kineticEnergyRatio = r.positive(stop, "kinetic_energy_ratio", where + ".stop", "-");
+      r.allowOnly(stop, where + ".stop", {"kinetic_energy_ratio", "wall_pressure", "wall", "after"});
+      if (!stop["kinetic_energy_ratio"] && !stop["wall_pressure"]) {
+        r.fail(stop, where + ".stop", "needs kinetic_energy_ratio and/or wall_pressure (with wall)");
+      }
+      if (stop["kinetic_energy_ratio"]) {
+        spec.kineticEnergyRatio = r.positive(stop, "kinetic_energy_ratio", where + ".stop", "-");
+        if (scene.gravity.norm() == 0.0) r.fail(stop, where + ".stop.kinetic_energy_ratio", "needs gravity (it is scaled by sum m |g| R_vol)");
+      }
+      if (stop["wall_pressure"]) {
+        spec.wallPressure = r.positive(stop, "wall_pressure", where + ".stop", "Pa");
+        const double w = r.number(stop, "wall", where + ".stop");
+        if (w < 0 || w >= static_cast<double>(scene.walls.size()) || w != std::floor(w)) {
+          r.fail(stop["wall"], where + ".stop.wall", "must be a wall index in [0, " + std::to_string(scene.walls.size()) + ")");
+        }
+        spec.pressureWall = static_cast<std::size_t>(w);
+      }
       spec.minimumDuration = r.number(stop, "after", where + ".stop", 0.0);
     }
     if (const YAML::Node move = st["move_wall"]) {

@@ -37,6 +37,18 @@ PackingMeasures measurePacking(const World& world) {
   m.slabHeight = hi - lo;
   m.solidFraction = volume / (d.length().x() * d.length().y() * m.slabHeight);
 
+  const Wall* floor = nullptr;
+  const Wall* ceiling = nullptr;
+  for (const Wall& w : world.walls()) {
+    if (w.plane.normal.z() > 0.999) floor = &w;
+    if (w.plane.normal.z() < -0.999) ceiling = &w;
+  }
+  if (floor && ceiling) {
+    double total = 0.0;
+    for (std::size_t i = 0; i < p.size(); ++i) total += world.shapes()[p.shape[i]].volume();
+    m.betweenWallsFraction = total / (d.length().x() * d.length().y() * (ceiling->plane.point.z() - floor->plane.point.z()));
+  }
+
   const std::vector<int> z = coordinationNumbers(world);
   long total = 0, nonRattlerTotal = 0, nonRattlers = 0;
   for (const int zi : z) {
@@ -49,6 +61,15 @@ PackingMeasures measurePacking(const World& world) {
   m.meanCoordination = static_cast<double>(total) / static_cast<double>(z.size());
   m.meanCoordinationNonRattlers = nonRattlers ? static_cast<double>(nonRattlerTotal) / nonRattlers : 0.0;
   return m;
+}
+
+double wallPressure(const World& world, std::size_t w) {
+  const Wall& wall = world.walls().at(w);
+  int axis;
+  wall.plane.normal.cwiseAbs().maxCoeff(&axis);
+  const Vec3 L = world.domain().length();
+  const double area = L.prod() / L(axis);
+  return std::abs(wall.force.dot(wall.plane.normal)) / area;
 }
 
 }  // namespace sqdem

@@ -61,7 +61,9 @@ struct StageSpec {
   std::string name;
   double duration = 0.0;            ///< simulated time limit (s)
   double kineticEnergyRatio = 0.0;  ///< stop when E_kin / (sum m |g| R_vol) falls below (0: off)
-  double minimumDuration = 0.0;     ///< the stop criterion is checked only after this (s)
+  double wallPressure = 0.0;        ///< stop when wall `pressureWall` carries this pressure (Pa, 0: off)
+  std::size_t pressureWall = 0;
+  double minimumDuration = 0.0;     ///< the stop criteria are checked only after this (s)
   double viscousDamping = 0.0;      ///< background drag c (1/s), F = -c m v
   std::optional<std::size_t> wall;  ///< wall moved in this stage
   Vec3 wallVelocity = Vec3::Zero(); ///< its velocity during the stage (m/s)

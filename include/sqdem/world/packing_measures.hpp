@@ -6,6 +6,8 @@
 //                        z_bottom = domain.lo.z, z_top = the highest particle top, R_max the
 //                        largest bounding radius (boundary layers excluded); if the bed is too
 //                        thin for a slab, the whole bed [z_bottom, z_top] is used;
+//   between-walls fraction  with a bottom (+z) and a top (-z) wall: all particle volume over
+//                        Lx Ly (z_top wall - z_bottom wall), the compressed-box measure;
 //   mean coordination    2 N_pp / N over all particles (particle-particle contacts; walls and
 //                        rattlers included), and over particles with >= 2 contacts.
 
@@ -19,7 +21,12 @@ struct PackingMeasures {
   double meanCoordination = 0.0;
   double meanCoordinationNonRattlers = 0.0;
   double bedHeight = 0.0;              ///< z_top - z_bottom (m)
+  double betweenWallsFraction = 0.0;   ///< 0 without a pair of opposed z walls
 };
+
+/// Normal pressure on wall w: |F . n| over the box cross-section normal to the wall's dominant
+/// axis (Pa).
+double wallPressure(const World& world, std::size_t w);
 
 PackingMeasures measurePacking(const World& world);
 
