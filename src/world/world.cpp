@@ -1,6 +1,7 @@
 #include "sqdem/world/world.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <stdexcept>
 
@@ -9,6 +10,12 @@
 #include "sqdem/mechanics/nan_adhesive.hpp"
 
 namespace sqdem {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
+
+}  // namespace
 
 World::World(std::vector<Superquadric> shapes, std::vector<Material> materials, const Domain& domain, double skin)
     : shapes_(std::move(shapes)),
@@ -45,40 +52,57 @@ std::size_t World::addParticle(std::uint32_t shape, std::uint32_t material, cons
   return particles_.add(shape, material, centre, q, s.mass(density), s.principalMomentsOfInertia(density));
 }
 
-void World::solveContact(Contact& c) const {
+void World::detect(Contact& c) const {
   const ParticleStore& p = particles_;
   const Superquadric& A = shapes_[p.shape[c.a]];
   const Pose poseA{p.position[c.a], p.orientation[c.a]};
-  const bool warm = c.geometry.converged();
+  if (c.onWall()) {
+    c.geometry = detectContact(A, poseA, walls_[c.b & ~wallFlag].plane);
+    return;
+  }
+  // A pair found separated stays so until the particles could have moved by its gap.
+  if (c.separation > 0.0) {
+    c.separation -= dt_ * (p.velocity[c.a].norm() + p.velocity[c.b].norm() +
+                           p.angularVelocity[c.a].norm() * boundingRadius_[c.a] +
+                           p.angularVelocity[c.b].norm() * boundingRadius_[c.b]);
+    if (c.separation > 0.0) {
+      c.geometry = ContactGeometry{};  // status Separated, no iterations
+      return;
+    }
+  }
+  const Superquadric& B = shapes_[p.shape[c.b]];
+  const Pose poseB{p.position[c.b] + c.shift, p.orientation[c.b]};
+  // Gaps within the skin are solved too, so that every candidate is warm-started next step.
+  const DetectorSettings settings{.cutoff = cellList_.skin()};
+  c.geometry = c.geometry.converged() ? detectContact(A, poseA, B, poseB, settings, c.geometry)
+                                      : detectContact(A, poseA, B, poseB, settings);
+  c.separation = c.geometry.status == ContactStatus::Separated ? -c.geometry.overlap : 0.0;
+}
+
+void World::applyLaw(Contact& c) const {
+  if (!c.geometry.touching()) {
+    c.force = {};
+    c.spring.setZero();
+    return;
+  }
+  const ParticleStore& p = particles_;
+  const Vec3 point = 0.5 * (c.geometry.pointA + c.geometry.pointB);
   ContactKinematics motion;
-  motion.volumeRadiusA = A.volumeEquivalentRadius();
+  motion.volumeRadiusA = shapes_[p.shape[c.a]].volumeEquivalentRadius();
+  const Vec3 velocityA = p.velocity[c.a] + p.angularVelocity[c.a].cross(point - p.position[c.a]);
   const ContactModel* law;
-  Vec3 velocityB = Vec3::Zero(), omegaB = Vec3::Zero(), centreB;
   if (c.onWall()) {
     const Wall& wall = walls_[c.b & ~wallFlag];
-    c.geometry = detectContact(A, poseA, wall.plane);
-    velocityB = wall.velocity;
-    centreB = c.geometry.pointB;
+    motion.relativeVelocity = wall.velocity - velocityA;
     motion.effectiveMass = p.mass[c.a];
     law = &model(p.material[c.a], wall.material);
   } else {
-    const Superquadric& B = shapes_[p.shape[c.b]];
-    const Pose poseB{p.position[c.b] + c.shift, p.orientation[c.b]};
-    c.geometry = warm ? detectContact(A, poseA, B, poseB, {}, c.geometry) : detectContact(A, poseA, B, poseB);
-    velocityB = p.velocity[c.b];
-    omegaB = p.angularVelocity[c.b];
-    centreB = poseB.position;
-    motion.volumeRadiusB = B.volumeEquivalentRadius();
+    const Vec3 centreB = p.position[c.b] + c.shift;
+    motion.relativeVelocity = p.velocity[c.b] + p.angularVelocity[c.b].cross(point - centreB) - velocityA;
+    motion.volumeRadiusB = shapes_[p.shape[c.b]].volumeEquivalentRadius();
     motion.effectiveMass = p.mass[c.a] * p.mass[c.b] / (p.mass[c.a] + p.mass[c.b]);
     law = &model(p.material[c.a], p.material[c.b]);
   }
-  if (!c.geometry.touching()) {
-    c.force = {};
-    return;
-  }
-  const Vec3 point = 0.5 * (c.geometry.pointA + c.geometry.pointB);
-  motion.relativeVelocity = velocityB + omegaB.cross(point - centreB) -
-                            (p.velocity[c.a] + p.angularVelocity[c.a].cross(point - poseA.position));
   c.force = contactForce(*law, c.geometry, motion, c.spring, dt_);
 }
 
@@ -86,45 +110,56 @@ void World::computeForces() {
   for (std::size_t k = 0; k < models_.size(); ++k) {
     if (!modelSet_[k]) throw std::logic_error("World: a material pair has no contact model");
   }
+  const auto start = Clock::now();
   ParticleStore& p = particles_;
   if (cellList_.needsRebuild(p)) cellList_.rebuild(p, boundingRadius_);
 
-  // Candidates in key order: particle pairs from the cell list, walls within reach.
+  // Candidates in key order (a, then b with walls after particles): for each particle its pairs
+  // from the cell list (sorted by (a, b)), then the walls within reach.
   std::vector<Contact> next;
-  next.reserve(cellList_.pairs().size() + contacts_.size());
+  next.reserve(cellList_.pairs().size() + pairs_.size());
   const double skin = cellList_.skin();
-  for (const CandidatePair& pair : cellList_.pairs()) {
-    Contact c;
-    c.a = pair.a;
-    c.b = pair.b;
-    c.shift = pair.shift;
-    next.push_back(c);
-  }
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    for (std::size_t w = 0; w < walls_.size(); ++w) {
+  auto pair = cellList_.pairs().begin();
+  const auto pairsEnd = cellList_.pairs().end();
+  for (std::uint32_t i = 0; i < p.size(); ++i) {
+    for (; pair != pairsEnd && pair->a == i; ++pair) {
+      Contact& c = next.emplace_back();
+      c.a = i;
+      c.b = pair->b;
+      c.shift = pair->shift;
+    }
+    for (std::uint32_t w = 0; w < walls_.size(); ++w) {
       const Plane& plane = walls_[w].plane;
       if ((p.position[i] - plane.point).dot(plane.normal) < boundingRadius_[i] + skin) {
-        Contact c;
-        c.a = static_cast<std::uint32_t>(i);
-        c.b = wallFlag | static_cast<std::uint32_t>(w);
-        next.push_back(c);
+        Contact& c = next.emplace_back();
+        c.a = i;
+        c.b = wallFlag | w;
       }
     }
   }
-  std::sort(next.begin(), next.end(), [](const Contact& x, const Contact& y) { return x.key() < y.key(); });
 
-  // Carry the history of contacts that persist (both lists are sorted by key).
-  auto previous = contacts_.begin();
+  // Carry the history of pairs that persist (both lists are sorted by key).
+  auto previous = pairs_.begin();
   for (Contact& c : next) {
-    while (previous != contacts_.end() && previous->key() < c.key()) ++previous;
-    if (previous != contacts_.end() && previous->key() == c.key()) {
+    while (previous != pairs_.end() && previous->key() < c.key()) ++previous;
+    if (previous != pairs_.end() && previous->key() == c.key()) {
       c.geometry = previous->geometry;
       c.spring = previous->spring;
+      c.separation = previous->separation;
     }
   }
 
+  const auto detected = Clock::now();
+  timing_.broadPhase += seconds(detected - start);
+  const auto count = static_cast<std::ptrdiff_t>(next.size());
 #pragma omp parallel for schedule(dynamic, 64)
-  for (std::ptrdiff_t k = 0; k < static_cast<std::ptrdiff_t>(next.size()); ++k) solveContact(next[k]);
+  for (std::ptrdiff_t k = 0; k < count; ++k) detect(next[k]);
+  const auto lawStart = Clock::now();
+  timing_.detection += seconds(lawStart - detected);
+#pragma omp parallel for schedule(dynamic, 64)
+  for (std::ptrdiff_t k = 0; k < count; ++k) applyLaw(next[k]);
+  const auto reduction = Clock::now();
+  timing_.law += seconds(reduction - lawStart);
 
   // Serial reduction in key order: independent of the thread count.
   for (std::size_t i = 0; i < p.size(); ++i) {
@@ -132,7 +167,8 @@ void World::computeForces() {
     p.torque[i].setZero();
   }
   for (Wall& w : walls_) w.force.setZero();
-  contacts_.clear();
+  pairs_.clear();
+  touching_.clear();
   for (Contact& c : next) {
     const ContactGeometry& g = c.geometry;
     if (!c.onWall()) {
@@ -140,7 +176,11 @@ void World::computeForces() {
       statistics_.detectorIterations += g.iterations;
     }
     if (g.status != ContactStatus::Converged && g.status != ContactStatus::Separated) ++statistics_.detectorFailures;
-    if (!g.touching()) continue;
+    if (!g.converged() && c.separation <= 0.0) continue;
+    if (!g.touching()) {  // a gap: kept only as the next step's warm start or cull
+      pairs_.push_back(std::move(c));
+      continue;
+    }
     if (g.overlap > 0.5 * shapes_[p.shape[c.a]].volumeEquivalentRadius()) ++statistics_.deepOverlaps;
     const Vec3 point = 0.5 * (g.pointA + g.pointB);
     const Vec3& F = c.force.onB;
@@ -152,9 +192,11 @@ void World::computeForces() {
       p.force[c.b] += F;
       p.torque[c.b] += (point - (p.position[c.b] + c.shift)).cross(F);
     }
-    contacts_.push_back(std::move(c));
+    touching_.push_back(static_cast<std::uint32_t>(pairs_.size()));
+    pairs_.push_back(std::move(c));
   }
   forcesCurrent_ = true;
+  timing_.reduction += seconds(Clock::now() - reduction);
 }
 
 void World::step() {
@@ -162,14 +204,21 @@ void World::step() {
   if (!forcesCurrent_) computeForces();
   const double h = dt_;
   ParticleStore& p = particles_;
-  for (std::size_t i = 0; i < p.size(); ++i) {
+  const auto start = Clock::now();
+  const auto n = static_cast<std::ptrdiff_t>(p.size());
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t i = 0; i < n; ++i) {
     kick(p, i, 0.5 * h);
     drift(p, i, h);
   }
   for (Wall& w : walls_) w.plane.point += h * w.velocity;
   time_ += h;
+  timing_.integration += seconds(Clock::now() - start);
   computeForces();
-  for (std::size_t i = 0; i < p.size(); ++i) kick(p, i, 0.5 * h);
+  const auto kickStart = Clock::now();
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t i = 0; i < n; ++i) kick(p, i, 0.5 * h);
+  timing_.integration += seconds(Clock::now() - kickStart);
 }
 
 double World::kineticEnergy() const {

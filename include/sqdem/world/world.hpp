@@ -8,6 +8,7 @@
 // fixed order, so results do not depend on the number of threads.
 
 #include <cstdint>
+#include <ranges>
 #include <vector>
 
 #include "sqdem/contact/detector.hpp"
@@ -44,6 +45,9 @@ struct Contact {
   ContactGeometry geometry;     ///< last solution: warm start for the next step
   Vec3 spring = Vec3::Zero();   ///< tangential spring (m)
   ContactForce force;           ///< force on b from the last step
+  /// When the last solve found the pair Separated: a lower bound of its gap (m), reduced every
+  /// step by a bound of the motion since; the pair is not solved again while it stays > 0.
+  double separation = 0.0;
 
   bool onWall() const { return (b & wallFlag) != 0; }
   std::uint64_t key() const { return (std::uint64_t{a} << 32) | b; }
@@ -54,6 +58,15 @@ struct WorldStatistics {
   long long detectorIterations = 0;
   long long detectorFailures = 0;  ///< statuses other than Converged/Separated (contact skipped)
   long long deepOverlaps = 0;      ///< contacts with overlap > 0.5 R_vol (time step too large?)
+};
+
+/// Wall-clock seconds spent in each part of the step (accumulated).
+struct StepTiming {
+  double integration = 0.0;  ///< kicks and drifts
+  double broadPhase = 0.0;   ///< cell list, candidate list, history carry-over
+  double detection = 0.0;    ///< common-normal detector
+  double law = 0.0;          ///< contact laws
+  double reduction = 0.0;    ///< forces and torques per particle, statistics
 };
 
 class World {
@@ -87,9 +100,13 @@ class World {
   const std::vector<Material>& materials() const { return materials_; }
   std::vector<Wall>& walls() { return walls_; }
   const std::vector<Wall>& walls() const { return walls_; }
-  const std::vector<Contact>& contacts() const { return contacts_; }
+  /// The touching contacts of the last force computation, in key order.
+  auto contacts() const {
+    return touching_ | std::views::transform([this](std::uint32_t k) -> const Contact& { return pairs_[k]; });
+  }
   const Domain& domain() const { return domain_; }
   const WorldStatistics& statistics() const { return statistics_; }
+  const StepTiming& timing() const { return timing_; }
   const CellList& cellList() const { return cellList_; }
 
   double kineticEnergy() const;
@@ -99,7 +116,8 @@ class World {
 
  private:
   const ContactModel& model(std::uint32_t ma, std::uint32_t mb) const { return models_[ma * materials_.size() + mb]; }
-  void solveContact(Contact& c) const;
+  void detect(Contact& c) const;    ///< narrow phase, warm-started from c.geometry
+  void applyLaw(Contact& c) const;  ///< force of a touching contact, updates its history
 
   std::vector<Superquadric> shapes_;
   std::vector<Material> materials_;
@@ -110,8 +128,10 @@ class World {
   ParticleStore particles_;
   std::vector<double> boundingRadius_;
   std::vector<Wall> walls_;
-  std::vector<Contact> contacts_;
+  std::vector<Contact> pairs_;            ///< touching contacts, gaps within the skin and separated pairs with a gap bound, key order
+  std::vector<std::uint32_t> touching_;   ///< indices of the touching ones in pairs_
   WorldStatistics statistics_;
+  StepTiming timing_;
   Vec3 gravity_ = Vec3::Zero();
   double viscousDamping_ = 0.0;
   double dt_ = 0.0, time_ = 0.0;
