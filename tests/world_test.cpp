@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "sqdem/world/packing_measures.hpp"
 #include "sqdem/world/world.hpp"
 
 namespace sqdem {
@@ -114,6 +115,25 @@ TEST(World, DampedSphereWallImpactReproducesRestitution) {
     std::printf("e = %.2f: rebound/impact = %.5f\n", e, rebound);
     EXPECT_NEAR(rebound, e, 0.01 * e);
   }
+}
+
+// The slab volume of a tilted ellipsoid (packing_measures.hpp) against a grid count of the
+// points inside it: whole body V, and a slab through it within the grid's resolution.
+TEST(PackingMeasures, EllipsoidVolumeInSlabMatchesPointCount) {
+  const Superquadric e = Superquadric::ellipsoid(1.0, 0.6, 0.3);
+  const Pose pose{Vec3(0.1, -0.2, 0.05), Quat(Eigen::AngleAxisd(0.7, Vec3(1, 2, 0.5).normalized()))};
+  EXPECT_NEAR(volumeInSlab(e, pose, -5.0, 5.0), e.volume(), 1e-12);
+  const double lo = -0.1, hi = 0.25, step = 0.01;
+  long inside = 0;
+  for (double x = -1.2; x < 1.2; x += step) {
+    for (double y = -1.2; y < 1.2; y += step) {
+      for (double z = lo + 0.5 * step; z < hi; z += step) {
+        inside += e.gauge(pose.toBody(Vec3(x, y, z))) <= 1.0;
+      }
+    }
+  }
+  const double counted = inside * step * step * step;
+  EXPECT_NEAR(volumeInSlab(e, pose, lo, hi), counted, 0.01 * counted);
 }
 
 }  // namespace

@@ -135,9 +135,11 @@ int runScene(const std::string& scenePath, fs::path outDir, int threads) {
     log.row(world, totalSteps, stage.name);
     log.flush();
     const PackingMeasures m = measurePacking(world);
-    std::printf("stage '%s': t = %.4g s, %s; solid fraction %.4f, mean coordination %.3f, E_kin %.3g J\n",
+    std::printf("stage '%s': t = %.4g s, %s; solid fraction %.4f, mean coordination %.3f, E_kin %.3g J",
                 stage.name.c_str(), world.time(), reason.c_str(), m.solidFraction, m.meanCoordination,
                 world.kineticEnergy());
+    if (scene.gravity.norm() > 0.0) std::printf(" (ratio %.3g)", kineticEnergyRatio(world, scene.gravity));
+    std::printf("\n");
     if (m.betweenWallsFraction > 0.0) std::printf("  solid fraction between the walls %.4f\n", m.betweenWallsFraction);
   }
   const double wall = seconds(Clock::now() - start);

@@ -1,9 +1,21 @@
 #include "sqdem/world/packing_measures.hpp"
 
 #include <algorithm>
-
+#include <cmath>
 
 namespace sqdem {
+
+double volumeInSlab(const Superquadric& s, const Pose& pose, double lo, double hi) {
+  const double zc = pose.position.z();
+  if (!s.isEllipsoid()) return zc >= lo && zc < hi ? s.volume() : 0.0;
+  const Vec3 axisZ = pose.orientation.conjugate() * Vec3::UnitZ();
+  const double h = std::sqrt(axisZ.cwiseProduct(s.halfExtents()).squaredNorm());
+  const auto primitive = [&](double t) {
+    t = std::clamp(t, -h, h);
+    return t - t * t * t / (3.0 * h * h);
+  };
+  return 3.0 * s.volume() / (4.0 * h) * (primitive(hi - zc) - primitive(lo - zc));
+}
 
 std::vector<int> coordinationNumbers(const World& world) {
   std::vector<int> z(world.particles().size(), 0);
@@ -21,18 +33,22 @@ PackingMeasures measurePacking(const World& world) {
   if (p.size() == 0) return m;
   const Domain& d = world.domain();
   const double bottom = d.lo.z();
-  double top = bottom, rMax = 0.0;
+  double top = bottom, meanRadius = 0.0, volumeTotal = 0.0, volumeHeight = 0.0;
   for (std::size_t i = 0; i < p.size(); ++i) {
-    const double r = world.shapes()[p.shape[i]].boundingRadius();
-    top = std::max(top, p.position[i].z() + r);
-    rMax = std::max(rMax, r);
+    const Superquadric& s = world.shapes()[p.shape[i]];
+    top = std::max(top, p.position[i].z() + s.boundingRadius());
+    meanRadius += s.volumeEquivalentRadius() / static_cast<double>(p.size());
+    volumeTotal += s.volume();
+    volumeHeight += s.volume() * (p.position[i].z() - bottom);
   }
   m.bedHeight = top - bottom;
-  double lo = bottom + 2.0 * rMax, hi = top - 2.0 * rMax;
-  if (hi - lo < 2.0 * rMax) lo = bottom, hi = top;
+  // A uniform bed of height H has its volume centroid at H/2.
+  const double equivalentHeight = 2.0 * volumeHeight / volumeTotal;
+  double lo = bottom + 2.0 * meanRadius, hi = bottom + equivalentHeight - 2.0 * meanRadius;
+  if (hi - lo < 2.0 * meanRadius) lo = bottom, hi = top;
   double volume = 0.0;
   for (std::size_t i = 0; i < p.size(); ++i) {
-    if (p.position[i].z() >= lo && p.position[i].z() < hi) volume += world.shapes()[p.shape[i]].volume();
+    volume += volumeInSlab(world.shapes()[p.shape[i]], Pose{p.position[i], p.orientation[i]}, lo, hi);
   }
   m.slabHeight = hi - lo;
   m.solidFraction = volume / (d.length().x() * d.length().y() * m.slabHeight);

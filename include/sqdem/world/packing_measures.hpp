@@ -1,11 +1,13 @@
 #pragma once
 // Packing measures of a bed resting on the bottom of the domain (gravity along -z).
 //
-//   bulk solid fraction  volume of the particles whose centres lie in the slab
-//                        [z_bottom + 2 R_max, z_top - 2 R_max] over the slab volume Lx Ly h,
-//                        z_bottom = domain.lo.z, z_top = the highest particle top, R_max the
-//                        largest bounding radius (boundary layers excluded); if the bed is too
-//                        thin for a slab, the whole bed [z_bottom, z_top] is used;
+//   bulk solid fraction  particle volume inside the slab [z_bottom + 2 R, z_bottom + H - 2 R]
+//                        (exact for ellipsoids; other shapes count where their centre lies)
+//                        over the slab volume Lx Ly h, with z_bottom = domain.lo.z, R the mean
+//                        volume-equivalent radius and H = 2 (volume-weighted mean centre height)
+//                        the height of a uniform bed with the same centroid (so the rough top
+//                        and the wall layer are excluded); a bed thinner than 6 R uses
+//                        [z_bottom, highest particle top];
 //   between-walls fraction  with a bottom (+z) and a top (-z) wall: all particle volume over
 //                        Lx Ly (z_top wall - z_bottom wall), the compressed-box measure;
 //   mean coordination    2 N_pp / N over all particles (particle-particle contacts; walls and
@@ -29,6 +31,12 @@ struct PackingMeasures {
 double wallPressure(const World& world, std::size_t w);
 
 PackingMeasures measurePacking(const World& world);
+
+/// Volume of a body between the planes z = lo and z = hi (m^3). Ellipsoids exactly: the
+/// cross-section normal to z is an ellipse of area (3V / 4h) (1 - t^2/h^2), t = z - z_c, with
+/// h = |diag(a, b, c) R^T e_z| the half-height; other superquadrics count wholly where their
+/// centre lies.
+double volumeInSlab(const Superquadric& shape, const Pose& pose, double lo, double hi);
 
 /// Particle-particle contacts per particle (walls excluded).
 std::vector<int> coordinationNumbers(const World& world);
