@@ -13,10 +13,12 @@ constexpr const char* usage = R"(sqdem - DEM for superquadric and ellipsoidal pa
 usage: sqdem <command> [arguments]
 
 commands:
-  run <scene.yaml> [--threads N] [--out DIR]
+  run <scene.yaml> [--threads N] [--out DIR] [--resume CHECKPOINT]
                          Run a DEM scene (YAML; keys in README.md "Scene files"): builds the
-                         particles, runs the stages, writes ParaView files (.pvd/.vtu/.vtp) and a
-                         CSV log to DIR (default out/<scene name>), prints a summary.
+                         particles, runs the stages, writes ParaView files (.pvd/.vtu/.vtp), a
+                         CSV log and a checkpoint after every stage to DIR (default
+                         out/<scene name>), prints a summary. --resume continues a checkpoint
+                         of the same scene with its remaining stages.
   validate table1        Reproduce Table 1 of the review (Kildashti et al. 2023, seed 004):
                          normalised elliptic Hertz force of two n = 6 superquadrics in three
                          poses, against the review's accurate model, FEM and simplified model.

@@ -1,6 +1,9 @@
-// `sqdem run scene.yaml [--threads N] [--out DIR]`: loads and validates the scene, builds the
-// world, runs its stages and writes the VTK series and a CSV log to DIR (default
-// out/<scene name>). Progress line on a terminal; summary at the end.
+// `sqdem run scene.yaml [--threads N] [--out DIR] [--resume CHECKPOINT]`: loads and validates
+// the scene, builds the world, runs its stages and writes the VTK series, a CSV log and, after
+// every stage, a checkpoint `<name>_after_<stage>.checkpoint` to DIR (default out/<scene name>). --resume
+// restores a checkpoint of the same scene and runs the remaining stages (bit for bit what the
+// uninterrupted run computes), writing under the name `<name>_from_stageK`. Progress line on a
+// terminal; summary at the end.
 
 #include <omp.h>
 #include <unistd.h>
@@ -9,6 +12,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <sstream>
 
@@ -48,6 +52,7 @@ bool finiteState(const ParticleStore& p) {
 class CsvLog {
  public:
   CsvLog(fs::path path, std::size_t walls) : path_(std::move(path)) {
+    text_.precision(12);
     text_ << "time,step,stage,kinetic_energy,contacts,mean_coordination,solid_fraction,bed_height,detector_failures";
     for (std::size_t w = 0; w < walls; ++w) text_ << ",wall" << w << "_z,wall" << w << "_fx,wall" << w << "_fy,wall" << w << "_fz";
     text_ << "\n";
@@ -69,13 +74,36 @@ class CsvLog {
   std::ostringstream text_;
 };
 
-int runScene(const std::string& scenePath, fs::path outDir, int threads) {
+/// Checkpoint file: the number of completed stages, then the world state.
+void writeCheckpoint(const fs::path& path, std::uint64_t stagesDone, const World& world) {
+  std::ostringstream out(std::ios::binary);
+  out.write(reinterpret_cast<const char*>(&stagesDone), sizeof stagesDone);
+  world.writeState(out);
+  writeFileAtomically(path, out.str());
+}
+
+std::uint64_t readCheckpoint(const fs::path& path, World& world, std::size_t stages) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw SceneError(path.string() + ": cannot open the checkpoint");
+  std::uint64_t stagesDone = 0;
+  in.read(reinterpret_cast<char*>(&stagesDone), sizeof stagesDone);
+  try {
+    world.readState(in);
+  } catch (const std::runtime_error& e) {
+    throw SceneError(path.string() + ": " + e.what());
+  }
+  if (stagesDone >= stages) throw SceneError(path.string() + ": every stage of the scene is already done");
+  return stagesDone;
+}
+
+int runScene(const std::string& scenePath, fs::path outDir, int threads, const std::string& resume) {
   const Scene scene = loadScene(scenePath);  // everything is validated before anything runs
   World world = buildWorld(scene);
   world.setGravity(scene.gravity);
+  const std::uint64_t firstStage = resume.empty() ? 0 : readCheckpoint(resume, world, scene.stages.size());
   if (threads > 0) omp_set_num_threads(threads);
-  const std::string name = fs::path(scenePath).stem().string();
-  if (outDir.empty()) outDir = fs::path("out") / name;
+  const std::string name = fs::path(scenePath).stem().string() + (firstStage ? "_from_stage" + std::to_string(firstStage) : "");
+  if (outDir.empty()) outDir = fs::path("out") / fs::path(scenePath).stem();
   fs::create_directories(outDir);
   const double dt = world.timeStep();
   std::printf("sqdem run: %s: %zu particles, %zu walls, dt = %.4g s, %d thread(s), output in %s\n", scenePath.c_str(),
@@ -83,7 +111,7 @@ int runScene(const std::string& scenePath, fs::path outDir, int threads) {
 
   VtkSeries vtk(outDir, name, scene.output.contacts);
   CsvLog log(outDir / (name + ".csv"), world.walls().size());
-  world.computeForces();
+  if (!firstStage) world.computeForces();  // a checkpoint carries its forces; recomputing would advance the springs
   vtk.writeFrame(world);
   log.row(world, 0, "initial");
 
@@ -91,7 +119,8 @@ int runScene(const std::string& scenePath, fs::path outDir, int threads) {
   const auto start = Clock::now();
   auto lastProgress = start;
   long totalSteps = 0;
-  for (const StageSpec& stage : scene.stages) {
+  for (std::size_t stageIndex = firstStage; stageIndex < scene.stages.size(); ++stageIndex) {
+    const StageSpec& stage = scene.stages[stageIndex];
     if (stage.wall) world.walls()[*stage.wall].velocity = stage.wallVelocity;
     world.setViscousDamping(stage.viscousDamping);
     const long steps = std::max(1L, std::lround(stage.duration / dt));
@@ -141,6 +170,7 @@ int runScene(const std::string& scenePath, fs::path outDir, int threads) {
     if (scene.gravity.norm() > 0.0) std::printf(" (ratio %.3g)", kineticEnergyRatio(world, scene.gravity));
     std::printf("\n");
     if (m.betweenWallsFraction > 0.0) std::printf("  solid fraction between the walls %.4f\n", m.betweenWallsFraction);
+    writeCheckpoint(outDir / (name + "_after_" + stage.name + ".checkpoint"), stageIndex + 1, world);
   }
   const double wall = seconds(Clock::now() - start);
   const WorldStatistics& st = world.statistics();
@@ -164,10 +194,11 @@ int runScene(const std::string& scenePath, fs::path outDir, int threads) {
 int runCommand(const Arguments& args) {
   std::string scene;
   fs::path outDir;
+  std::string resume;
   int threads = 0;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
-    if ((a == "--threads" || a == "--out") && i + 1 == args.size()) {
+    if ((a == "--threads" || a == "--out" || a == "--resume") && i + 1 == args.size()) {
       std::fprintf(stderr, "sqdem run: '%s' needs a value\n", a.c_str());
       return 2;
     }
@@ -182,19 +213,21 @@ int runCommand(const Arguments& args) {
       threads = static_cast<int>(n);
     } else if (a == "--out") {
       outDir = args[++i];
+    } else if (a == "--resume") {
+      resume = args[++i];
     } else if (scene.empty() && a.rfind("--", 0) != 0) {
       scene = a;
     } else {
-      std::fprintf(stderr, "sqdem run: unexpected argument '%s'\nusage: sqdem run scene.yaml [--threads N] [--out DIR]\n", a.c_str());
+      std::fprintf(stderr, "sqdem run: unexpected argument '%s'\nusage: sqdem run scene.yaml [--threads N] [--out DIR] [--resume CHECKPOINT]\n", a.c_str());
       return 2;
     }
   }
   if (scene.empty()) {
-    std::fprintf(stderr, "usage: sqdem run scene.yaml [--threads N] [--out DIR]\n");
+    std::fprintf(stderr, "usage: sqdem run scene.yaml [--threads N] [--out DIR] [--resume CHECKPOINT]\n");
     return 2;
   }
   try {
-    return runScene(scene, outDir, threads);
+    return runScene(scene, outDir, threads, resume);
   } catch (const SceneError& e) {
     std::fprintf(stderr, "sqdem run: %s\n", e.what());
     return 1;

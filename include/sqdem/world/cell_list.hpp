@@ -31,6 +31,13 @@ class CellList {
   void rebuild(ParticleStore& particles, const std::vector<double>& boundingRadius);
 
   const std::vector<CandidatePair>& pairs() const { return pairs_; }
+  /// The build state, for checkpoints: positions at the last build and the candidate list.
+  const std::vector<Vec3>& referencePositions() const { return reference_; }
+  void restore(std::vector<Vec3> reference, std::vector<CandidatePair> pairs, int builds) {
+    reference_ = std::move(reference);
+    pairs_ = std::move(pairs);
+    builds_ = builds;
+  }
   int builds() const { return builds_; }
   double skin() const { return skin_; }
 

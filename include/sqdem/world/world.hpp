@@ -8,6 +8,7 @@
 // fixed order, so results do not depend on the number of threads.
 
 #include <cstdint>
+#include <iosfwd>
 #include <ranges>
 #include <vector>
 
@@ -108,6 +109,14 @@ class World {
   const WorldStatistics& statistics() const { return statistics_; }
   const StepTiming& timing() const { return timing_; }
   const CellList& cellList() const { return cellList_; }
+
+  /// Checkpoint of the dynamic state (particles, walls, contact history, neighbour list,
+  /// time, statistics) in a binary form for the same build; the static parts (shapes,
+  /// materials, laws) come from the scene. Restoring into a world built from the same scene
+  /// continues bit for bit (world_state.cpp).
+  void writeState(std::ostream& out) const;
+  /// Throws std::runtime_error if the checkpoint does not match this world.
+  void readState(std::istream& in);
 
   double kineticEnergy() const;
   /// Rayleigh time (000 Eq. 71) of the particle with the smallest semi-axis (s); scenes use a
