@@ -4,7 +4,7 @@
 // mean coordination ~6), small random tilts and velocities, run on 1 and 2 threads.
 // Reports particle-steps per second, detector iterations per call and the time per step stage.
 //
-// usage: bench_engine [particles per edge, default 22] [steps per sample, default 40]
+// usage: bench_engine [particles per edge, default 22] [steps per sample, default 40] [case 0-3]
 
 #include <omp.h>
 
@@ -63,6 +63,7 @@ double median(std::vector<double> v) {
 int main(int argc, char** argv) {
   const int edge = argc > 1 ? std::atoi(argv[1]) : 22;
   const int steps = argc > 2 ? std::atoi(argv[2]) : 40;
+  const int only = argc > 3 ? std::atoi(argv[3]) : -1;
   const double R = 1e-3;
   const Case cases[] = {
       {"ellipsoids 1:0.8:0.6, elliptic Hertz", Superquadric::ellipsoid(R, 0.8 * R, 0.6 * R), NormalLaw::EllipticHertz},
@@ -72,7 +73,9 @@ int main(int argc, char** argv) {
   };
   std::printf("dense periodic bed, %d^3 = %d particles, %d steps per sample, median of 5 samples\n", edge,
               edge * edge * edge, steps);
-  for (const Case& c : cases) {
+  for (int index = 0; index < 4; ++index) {
+    if (only >= 0 && index != only) continue;
+    const Case& c = cases[index];
     for (const int threads : {1, 2}) {
       omp_set_num_threads(threads);
       World world = denseBed(c, edge, 1);

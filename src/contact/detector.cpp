@@ -140,8 +140,14 @@ SupportPair minimiseSupportGap(const PairFrame& f, const Vec3& startNormal,
 /// Least-squares solution of [J; sqrt(damping) I] step = [-r; 0] by column-pivoted QR, which
 /// does not square J's condition number (large where the relative curvature nearly vanishes,
 /// as in flat-on-flat contacts) and returns the minimum-norm-like basic step when J is singular.
+/// The undamped step of a well-conditioned J (the common case) uses the cheaper partially
+/// pivoted LU, which gives the same solution.
 Vec4 dampedStep(const Iterate& it, double damping) {
-  if (damping == 0.0) return it.J.colPivHouseholderQr().solve(-it.r);
+  if (damping == 0.0) {
+    const Eigen::PartialPivLU<Mat4> lu(it.J);
+    if (lu.rcond() > 1e-6) return lu.solve(-it.r);
+    return it.J.colPivHouseholderQr().solve(-it.r);
+  }
   Eigen::Matrix<double, 8, 4> augmented;
   augmented << it.J, std::sqrt(damping) * Mat4::Identity();
   Eigen::Matrix<double, 8, 1> rhs;
@@ -156,7 +162,8 @@ Vec2 capped(const Vec2& step, double maxLength) {
 }
 
 /// Packs a solved pair (points in A's body frame) into world-frame ContactGeometry.
-ContactGeometry finish(const PairFrame& f, const Pose& poseA, const Iterate& it, ContactStatus status, int iterations) {
+ContactGeometry finish(const PairFrame& f, const Pose& poseA, const Iterate& it, ContactStatus status, int iterations,
+                       bool curvatures) {
   ContactGeometry g;
   g.status = status;
   const Mat3 RA = poseA.rotation();
@@ -166,8 +173,10 @@ ContactGeometry finish(const PairFrame& f, const Pose& poseA, const Iterate& it,
   g.pointB = poseA.toWorld(it.b.point);
   g.normal = RA * it.a.normal;
   g.overlap = -(it.b.point - it.a.point).dot(it.a.normal);
-  g.curvatureA = principalCurvatures(it.a.gradient, it.a.hessian).rotated(RA);
-  g.curvatureB = principalCurvatures(it.b.gradient, it.b.hessian).rotated(RA);
+  if (curvatures) {
+    g.curvatureA = principalCurvatures(it.a.gradient, it.a.hessian).rotated(RA);
+    g.curvatureB = principalCurvatures(it.b.gradient, it.b.hessian).rotated(RA);
+  }
   g.iterations = iterations;
   g.residual = it.norm;
   return g;
@@ -261,7 +270,7 @@ ContactGeometry newtonSolve(const PairFrame& f, const Pose& poseA, const Vec3& p
     g.iterations = earlierIterations + iterations;
     return g;
   }
-  ContactGeometry g = finish(f, poseA, current, status, earlierIterations + iterations);
+  ContactGeometry g = finish(f, poseA, current, status, earlierIterations + iterations, settings.curvatures);
   if (g.converged()) {
     const bool antiparallel = current.a.normal.dot(current.b.normal) < 0.0;
     const bool facesB = current.a.normal.dot(f.c) >= 0.0;
@@ -346,8 +355,10 @@ ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const Pl
   g.normal = n;
   g.pointB = g.pointA + g.overlap * wall.normal;
   g.localPointB = g.pointB;  // the wall's frame is the world frame
-  const GaugeDerivatives d = A.derivatives(g.localPointA);
-  g.curvatureA = principalCurvatures(d.gradient, d.hessian).rotated(RA);
+  if (settings.curvatures) {
+    const GaugeDerivatives d = A.derivatives(g.localPointA);
+    g.curvatureA = principalCurvatures(d.gradient, d.hessian).rotated(RA);
+  }
   g.curvatureB = PrincipalCurvatures::flat(wall.normal);
   return g;
 }

@@ -17,33 +17,46 @@ double capRadius(double inverseRadius, double cap) {
   return inverseRadius > 1.0 / cap ? 1.0 / inverseRadius : cap;
 }
 
-/// Eq. 13 tabulated on a uniform grid in u = ln(Ri/Rj), cubic (4-point Lagrange) interpolation.
+/// Eq. 13 and the factors of Eqs. 11-12 tabulated on a uniform grid in u = ln(Ri/Rj), cubic
+/// (4-point Lagrange) interpolation of e^2, gamma and beta with the same weights.
 class EccentricityTable {
  public:
   static constexpr double minRatio = 1e-8;
   static constexpr int intervals = 1024;
 
   EccentricityTable() : uMin_(std::log(minRatio)), step_(-uMin_ / intervals) {
-    values_.resize(intervals + 1);
+    nodes_.resize(intervals + 1);
     for (int k = 0; k <= intervals; ++k) {
-      values_[k] = eccentricitySquaredExact(std::exp(uMin_ + k * step_));
+      nodes_[k] = hertzFactorsFromEccentricity(eccentricitySquaredExact(std::exp(uMin_ + k * step_)));
     }
   }
 
-  double operator()(double ratio) const {
+  HertzFactors operator()(double ratio) const {
     const double x = (std::log(ratio) - uMin_) / step_;
     const int k = std::clamp(static_cast<int>(x) - 1, 0, intervals - 3);
     const double s = x - k;  // position relative to node k, in [1, 2] inside the grid
-    const double* y = &values_[k];
-    const double l0 = -(s - 1) * (s - 2) * (s - 3) / 6.0, l1 = s * (s - 2) * (s - 3) / 2.0;
-    const double l2 = -s * (s - 1) * (s - 3) / 2.0, l3 = s * (s - 1) * (s - 2) / 6.0;
-    return std::max(0.0, l0 * y[0] + l1 * y[1] + l2 * y[2] + l3 * y[3]);
+    const HertzFactors* y = &nodes_[k];
+    const double l[4] = {-(s - 1) * (s - 2) * (s - 3) / 6.0, s * (s - 2) * (s - 3) / 2.0,
+                         -s * (s - 1) * (s - 3) / 2.0, s * (s - 1) * (s - 2) / 6.0};
+    HertzFactors h{0.0, 0.0, 0.0};
+    for (int i = 0; i < 4; ++i) {
+      h.e2 += l[i] * y[i].e2;
+      h.gamma += l[i] * y[i].gamma;
+      h.beta += l[i] * y[i].beta;
+    }
+    h.e2 = std::max(0.0, h.e2);
+    return h;
   }
 
  private:
   double uMin_, step_;
-  std::vector<double> values_;
+  std::vector<HertzFactors> nodes_;
 };
+
+const EccentricityTable& eccentricityTable() {
+  static const EccentricityTable table;
+  return table;
+}
 
 void requireRatio(double ratio) {
   if (!(ratio > 0.0 && ratio <= 1.0)) {
@@ -98,8 +111,7 @@ double eccentricitySquaredExplicit(double ratio) {
 double eccentricitySquaredTabulated(double ratio) {
   requireRatio(ratio);
   if (ratio < EccentricityTable::minRatio) return eccentricitySquaredExact(ratio);
-  static const EccentricityTable table;
-  return table(ratio);
+  return eccentricityTable()(ratio).e2;
 }
 
 double eccentricitySquared(double ratio, EccentricityMethod method) {
@@ -123,6 +135,10 @@ HertzFactors hertzFactorsFromEccentricity(double e2) {
 }
 
 HertzFactors hertzFactors(double ratio, EccentricityMethod method) {
+  if (method == EccentricityMethod::Tabulated) {
+    requireRatio(ratio);
+    if (ratio >= EccentricityTable::minRatio) return eccentricityTable()(ratio);
+  }
   return hertzFactorsFromEccentricity(eccentricitySquared(ratio, method));
 }
 

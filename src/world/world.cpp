@@ -56,8 +56,10 @@ void World::detect(Contact& c) const {
   const ParticleStore& p = particles_;
   const Superquadric& A = shapes_[p.shape[c.a]];
   const Pose poseA{p.position[c.a], p.orientation[c.a]};
+  const bool curvatures = model(p.material[c.a], c.onWall() ? walls_[c.b & ~wallFlag].material : p.material[c.b]).normal ==
+                          NormalLaw::EllipticHertz;  // a law that does not use them does not pay for them
   if (c.onWall()) {
-    c.geometry = detectContact(A, poseA, walls_[c.b & ~wallFlag].plane);
+    c.geometry = detectContact(A, poseA, walls_[c.b & ~wallFlag].plane, {.curvatures = curvatures});
     return;
   }
   // A pair found separated stays so until the particles could have moved by its gap.
@@ -73,7 +75,7 @@ void World::detect(Contact& c) const {
   const Superquadric& B = shapes_[p.shape[c.b]];
   const Pose poseB{p.position[c.b] + c.shift, p.orientation[c.b]};
   // Gaps within the skin are solved too, so that every candidate is warm-started next step.
-  const DetectorSettings settings{.cutoff = cellList_.skin()};
+  const DetectorSettings settings{.cutoff = cellList_.skin(), .curvatures = curvatures};
   c.geometry = c.geometry.converged() ? detectContact(A, poseA, B, poseB, settings, c.geometry)
                                       : detectContact(A, poseA, B, poseB, settings);
   c.separation = c.geometry.status == ContactStatus::Separated ? -c.geometry.overlap : 0.0;

@@ -32,6 +32,8 @@ struct DetectorSettings {
   /// Converged when the residual is below tolerance * L (L = sqrt(R_vol,A R_vol,B)).
   double tolerance = 1e-10;
   int maxIterations = 100;
+  /// false: skip the principal curvatures (left default) for laws that do not use them.
+  bool curvatures = true;
 };
 
 /// Cold solve: the initial guess descends the support gap from the line of centres.
