@@ -4,6 +4,9 @@
 
 #include <cmath>
 
+#include <omp.h>
+
+#include "sqdem/mechanics/haervig.hpp"
 #include "sqdem/world/packing_measures.hpp"
 #include "sqdem/world/world.hpp"
 
@@ -115,6 +118,53 @@ TEST(World, DampedSphereWallImpactReproducesRestitution) {
     std::printf("e = %.2f: rebound/impact = %.5f\n", e, rebound);
     EXPECT_NEAR(rebound, e, 0.01 * e);
   }
+}
+
+// 001 Eq. 24 / Fig. 8 and 13: an adhesive sphere-wall impact (simplified JKR, e = 0.9, chosen so
+// that adhesion halves the rebound velocity) keeps its rebound velocity when E is reduced 10x
+// and 100x with gamma_mod = gamma (E_mod/E)^2/5, and its collision time scales as
+// (E/E_mod)^2/5; without the rule the softer particle sticks.
+struct Impact {
+  double rebound;        ///< outgoing / incoming speed
+  double collisionTime;  ///< (s)
+};
+
+Impact adhesiveImpact(double youngs, double surfaceEnergy) {
+  const double R = 1e-5, v0 = 0.2;
+  World world({Superquadric::sphere(R)}, {Material{youngs, 0.3, 2500.0, 0.0, 0.9}}, bigBox(), 1e-6);
+  ContactModel law = world.defaultContactModel(0, 0);
+  law.surfaceEnergy = surfaceEnergy;
+  world.setContactModel(0, 0, law);
+  world.addWall({Plane{Vec3::Zero(), Vec3::UnitZ()}, Vec3::Zero(), 0});
+  world.addParticle(0, 0, Vec3(0.0, 0.0, 1.0001 * R), Quat::Identity());
+  world.particles().velocity[0] = Vec3(0.0, 0.0, -v0);
+  const double m = world.particles().mass[0];
+  const double hertzTime = 2.87 * std::pow(m * m / (R * youngs * youngs * v0), 0.2);  // order of magnitude
+  world.setTimeStep(hertzTime / 4000.0);
+  double start = -1.0;
+  for (int step = 0; step < 100000; ++step) {
+    world.step();
+    const bool touching = !world.contacts().empty();
+    if (touching && start < 0.0) start = world.time();
+    if (!touching && start >= 0.0) return {world.particles().velocity[0].z() / v0, world.time() - start};
+  }
+  return {0.0, std::numeric_limits<double>::infinity()};  // stuck
+}
+
+TEST(World, ReducedStiffnessRuleKeepsAdhesiveReboundVelocity) {
+  omp_set_num_threads(1);
+  const double E = 1e9, gamma = 0.2;
+  const Impact base = adhesiveImpact(E, gamma);
+  ASSERT_GT(base.rebound, 0.3);  // adhesion matters: e_eff well below e = 0.9
+  ASSERT_LT(base.rebound, 0.7);
+  for (const double factor : {0.1, 0.01}) {
+    const Impact soft = adhesiveImpact(factor * E, reducedStiffnessSurfaceEnergy(gamma, E, factor * E));
+    std::printf("E x %.2f: rebound %.6f vs %.6f, collision time ratio %.5f vs (E/E_mod)^2/5 = %.5f\n", factor,
+                soft.rebound, base.rebound, soft.collisionTime / base.collisionTime, std::pow(1.0 / factor, 0.4));
+    EXPECT_NEAR(soft.rebound, base.rebound, 1e-3 * base.rebound);
+    EXPECT_NEAR(soft.collisionTime / base.collisionTime, std::pow(1.0 / factor, 0.4), 1e-3 * std::pow(1.0 / factor, 0.4));
+  }
+  EXPECT_EQ(adhesiveImpact(0.1 * E, gamma).rebound, 0.0);  // the unmodified gamma sticks
 }
 
 // The slab volume of a tilted ellipsoid (packing_measures.hpp) against a grid count of the

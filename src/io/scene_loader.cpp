@@ -197,7 +197,7 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
   for (std::size_t k = 0; k < interactions.size(); ++k) {
     const YAML::Node in = interactions[k];
     const std::string where = "interactions[" + std::to_string(k) + "]";
-    r.allowOnly(in, where, {"materials", "normal", "eccentricity", "cap_factor", "reduced_stiffness"});
+    r.allowOnly(in, where, {"materials", "normal", "eccentricity", "cap_factor", "reduced_stiffness", "surface_energy"});
     const YAML::Node pair = in["materials"];
     if (!pair || !pair.IsSequence() || pair.size() != 2) r.fail(pair ? pair : in, where + ".materials", "must be a pair [material, material]");
     InteractionSpec spec;
@@ -218,6 +218,8 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
     if (!(spec.capFactor > 0.0)) r.fail(in["cap_factor"], where + ".cap_factor", "must be > 0");
     spec.stiffnessScale = r.number(in, "reduced_stiffness", where, 1.0);
     if (!(spec.stiffnessScale > 0.0 && spec.stiffnessScale <= 1.0)) r.fail(in["reduced_stiffness"], where + ".reduced_stiffness", "must be in (0, 1] (E_mod / E)");
+    spec.surfaceEnergy = r.number(in, "surface_energy", where, 0.0);
+    if (spec.surfaceEnergy < 0.0) r.fail(in["surface_energy"], where + ".surface_energy", "must be >= 0 (J/m^2)");
     scene.interactions.push_back(spec);
   }
   for (std::size_t a = 0; a < nm; ++a) {

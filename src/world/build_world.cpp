@@ -94,8 +94,9 @@ World buildWorld(const Scene& scene) {
     model.normal = in.normal;
     model.eccentricity = in.eccentricity;
     model.capFactor = in.capFactor;
-    model.effectiveModulus *= in.stiffnessScale;  // 001 Eq. 24 (no adhesion: gamma unchanged)
+    model.effectiveModulus *= in.stiffnessScale;
     model.effectiveShear *= in.stiffnessScale;
+    model.surfaceEnergy = in.surfaceEnergy * std::pow(in.stiffnessScale, 0.4);  // 001 Eq. 24
     minScale = std::min(minScale, in.stiffnessScale);
     world.setContactModel(in.materialA, in.materialB, model);
   }

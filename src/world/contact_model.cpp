@@ -1,7 +1,10 @@
 #include "sqdem/world/contact_model.hpp"
 
+#include "sqdem/mechanics/haervig.hpp"
+
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 namespace sqdem {
 
@@ -27,7 +30,11 @@ ContactForce contactForce(const ContactModel& model, const ContactGeometry& geom
     beta = 2.0;
   }
   const double sqrtDelta = std::sqrt(delta);
-  const double elastic = 4.0 / 3.0 * model.effectiveModulus * std::sqrt(Rc) * gamma * delta * sqrtDelta;
+  // Adhesion: Haervig's simplified JKR on the Hertz-equivalent sphere R* = gamma^2 Rc.
+  std::optional<HaervigJkr> jkr;
+  if (model.surfaceEnergy > 0.0) jkr.emplace(model.effectiveModulus, model.surfaceEnergy, gamma * gamma * Rc);
+  const double elastic = jkr ? jkr->normalForce(delta)
+                             : 4.0 / 3.0 * model.effectiveModulus * std::sqrt(Rc) * gamma * delta * sqrtDelta;
   const double Sn = 2.0 * model.effectiveModulus * gamma * std::sqrt(Rc) * sqrtDelta;  // dF/d(delta)
   const double dampingScale = 2.0 * std::sqrt(5.0 / 6.0) * model.dampingRatio;
   const double normalRate = -motion.relativeVelocity.dot(n);  // > 0 approaching
@@ -49,7 +56,7 @@ ContactForce contactForce(const ContactModel& model, const ContactGeometry& geom
   const double kt = 8.0 * model.effectiveShear * std::sqrt(out.area / std::numbers::pi);
   const double etat = dampingScale * std::sqrt(motion.effectiveMass * kt);
   Vec3 Ft = -kt * spring - etat * vt;  // on B
-  const double limit = model.friction * std::max(Fn, 0.0);
+  const double limit = model.friction * (jkr ? std::abs(Fn + 2.0 * jkr->criticalForce()) : std::max(Fn, 0.0));
   if (Ft.norm() > limit) {
     Ft *= limit / Ft.norm();
     spring = kt > 0.0 ? Vec3(-(Ft + etat * vt) / kt) : Vec3::Zero();

@@ -43,6 +43,7 @@ struct InteractionSpec {
   EccentricityMethod eccentricity = EccentricityMethod::Tabulated;
   double capFactor = 10.0;
   double stiffnessScale = 1.0;  ///< reduced-stiffness factor E_mod/E (001 Eq. 24)
+  double surfaceEnergy = 0.0;   ///< gamma (J/m^2) of the real material; 0: no adhesion
 };
 
 struct WallSpec {

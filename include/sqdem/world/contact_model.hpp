@@ -13,6 +13,10 @@
 //                             contact), stiffness k_t = 8 G* a, a = sqrt(A/pi) (Mindlin's no-slip
 //                             stiffness of the area-equivalent circle, 004 Eq. 56 with Phi = 1),
 //                             damping 2 sqrt(5/6) zeta sqrt(m* k_t), Coulomb cap |F_t| <= mu F_n
+//   adhesion (optional)       Haervig's simplified JKR (001 Eqs. 7-10) in place of the elastic
+//                             Hertz term, on the Hertz-equivalent sphere R* = gamma^2 Rc; the
+//                             contact acts for overlap > 0 only (the simplified model breaks at
+//                             delta = 0), the Coulomb cap becomes mu |F_n + 2 F_C| (001 Eq. 17)
 //   total normal force        not clamped: near the end of a damped contact it turns slightly
 //                             tensile, which the restitution relation zeta(e) of 001 Eq. 12
 //                             assumes (clamping it would raise the effective e, 0.30 -> 0.40).
@@ -33,6 +37,7 @@ struct ContactModel {
   double effectiveShear = 0.0;     ///< G* = ((2 - nuA)/GA + (2 - nuB)/GB)^-1 (Pa)
   double friction = 0.0;           ///< mu (-)
   double dampingRatio = 0.0;       ///< zeta(e) (-), 0 for e = 1
+  double surfaceEnergy = 0.0;      ///< gamma (J/m^2), W = 2 gamma; > 0 adds JKR adhesion
 };
 
 /// What the law needs besides the geometry.
