@@ -20,6 +20,11 @@ std::string writeScene(const std::string& name, const std::string& text) {
   return path.string();
 }
 
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  text.replace(text.find(from), from.size(), to);
+  return text;
+}
+
 // A small poured bed of ellipsoids in a box periodic in x and y (SI units).
 const char* bedScene = R"(seed: 7
 domain: {lo: [0, 0, 0], hi: [6.0e-3, 6.0e-3, 12.0e-3], periodic: [x, y]}
@@ -113,6 +118,36 @@ TEST(Engine, CheckpointRestartContinuesBitwise) {
   EXPECT_THROW(resumed.readState(garbage), std::runtime_error);
 }
 
+// Force control: a servo-controlled lid holds its target pressure on a settled bed, and the
+// bottom wall then carries the weight plus the lid's force (static equilibrium).
+TEST(Engine, ServoWallHoldsItsPressure) {
+  const std::string lidded = replaced(bedScene, "  - {point: [0, 0, 0], normal: [0, 0, 1], material: glass}\n",
+                                      "  - {point: [0, 0, 0], normal: [0, 0, 1], material: glass}\n"
+                                      "  - {point: [0, 0, 11.8e-3], normal: [0, 0, -1], material: glass}\n");
+  const Scene scene = loadScene(writeScene("lid", lidded));
+  World world = buildWorld(scene);
+  world.setGravity(scene.gravity);
+  world.setViscousDamping(200.0);
+  for (int s = 0; s < 40000; ++s) world.step();
+  world.setViscousDamping(0.0);
+  const double target = 50.0;  // Pa, about twice the bed's own weight per area
+  world.walls()[1].servo = WallServo{target, 0.02};
+  double weight = 0.0;
+  for (double m : world.particles().mass) weight += m * 9.81;
+  double pressureError = 1.0, balance = 1.0;
+  for (int s = 0; s < 300000 && (pressureError > 1e-3 || balance > 1e-3); ++s) {
+    world.step();
+    if (s % 1000 == 0) {
+      pressureError = std::abs(world.wallPressure(1) / target - 1.0);
+      balance = std::abs((-world.walls()[0].force.z() - world.walls()[1].force.z()) / weight - 1.0);
+    }
+  }
+  std::printf("lid pressure %.4f Pa (target %.1f), bottom force / (weight + lid force) - 1 = %.2g\n",
+              world.wallPressure(1), target, balance);
+  EXPECT_LT(pressureError, 1e-3);
+  EXPECT_LT(balance, 1e-3);
+}
+
 void expectSceneError(const std::string& text, const std::string& expected) {
   const std::string path = writeScene("bad", text);
   try {
@@ -122,11 +157,6 @@ void expectSceneError(const std::string& text, const std::string& expected) {
     EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
   }
-}
-
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-  text.replace(text.find(from), from.size(), to);
-  return text;
 }
 
 TEST(Engine, SceneErrorsNameLineKeyAndWhatIsAllowed) {

@@ -122,6 +122,8 @@ int runScene(const std::string& scenePath, fs::path outDir, int threads, const s
   for (std::size_t stageIndex = firstStage; stageIndex < scene.stages.size(); ++stageIndex) {
     const StageSpec& stage = scene.stages[stageIndex];
     if (stage.wall) world.walls()[*stage.wall].velocity = stage.wallVelocity;
+    for (Wall& w : world.walls()) w.servo.reset();
+    if (stage.servoWall) world.walls()[*stage.servoWall].servo = stage.servo;
     world.setViscousDamping(stage.viscousDamping);
     const long steps = std::max(1L, std::lround(stage.duration / dt));
     const long frameEvery = scene.output.frames ? std::max(1L, steps / static_cast<long>(scene.output.frames)) : 0;
@@ -144,7 +146,7 @@ int runScene(const std::string& scenePath, fs::path outDir, int threads, const s
         if (stage.kineticEnergyRatio > 0.0 && s % 100 == 0 &&
             kineticEnergyRatio(world, scene.gravity) < stage.kineticEnergyRatio) {
           reason = "kinetic energy ratio below " + std::to_string(stage.kineticEnergyRatio);
-        } else if (stage.wallPressure > 0.0 && wallPressure(world, stage.pressureWall) >= stage.wallPressure) {
+        } else if (stage.wallPressure > 0.0 && world.wallPressure(stage.pressureWall) >= stage.wallPressure) {
           reason = "wall " + std::to_string(stage.pressureWall) + " pressure reached " + std::to_string(stage.wallPressure) + " Pa";
         }
         if (reason != "duration reached") {

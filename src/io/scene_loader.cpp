@@ -276,7 +276,7 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
   for (std::size_t k = 0; k < stages.size(); ++k) {
     const std::string where = "stages[" + std::to_string(k) + "]";
     const YAML::Node st = stages[k];
-    r.allowOnly(st, where, {"name", "duration", "stop", "move_wall", "viscous_damping"});
+    r.allowOnly(st, where, {"name", "duration", "stop", "move_wall", "servo_wall", "viscous_damping"});
     StageSpec spec;
     spec.name = st["name"] ? r.text(st, "name", where) : "stage" + std::to_string(k);
     spec.duration = r.positive(st, "duration", where, "s");
@@ -309,6 +309,19 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
       }
       spec.wall = static_cast<std::size_t>(w);
       spec.wallVelocity = r.vector(move, "velocity", where + ".move_wall");
+    }
+    if (const YAML::Node servo = st["servo_wall"]) {
+      r.allowOnly(servo, where + ".servo_wall", {"wall", "pressure", "max_speed"});
+      const double w = r.number(servo, "wall", where + ".servo_wall");
+      if (w < 0 || w >= static_cast<double>(scene.walls.size()) || w != std::floor(w)) {
+        r.fail(servo["wall"], where + ".servo_wall.wall", "must be a wall index in [0, " + std::to_string(scene.walls.size()) + ")");
+      }
+      if (spec.wall && *spec.wall == static_cast<std::size_t>(w)) {
+        r.fail(servo, where + ".servo_wall", "the same wall cannot also be in move_wall");
+      }
+      spec.servoWall = static_cast<std::size_t>(w);
+      spec.servo.pressure = r.positive(servo, "pressure", where + ".servo_wall", "Pa");
+      spec.servo.maxSpeed = r.positive(servo, "max_speed", where + ".servo_wall", "m/s");
     }
     scene.stages.push_back(spec);
   }

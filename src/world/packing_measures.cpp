@@ -79,13 +79,4 @@ PackingMeasures measurePacking(const World& world) {
   return m;
 }
 
-double wallPressure(const World& world, std::size_t w) {
-  const Wall& wall = world.walls().at(w);
-  int axis;
-  wall.plane.normal.cwiseAbs().maxCoeff(&axis);
-  const Vec3 L = world.domain().length();
-  const double area = L.prod() / L(axis);
-  return std::abs(wall.force.dot(wall.plane.normal)) / area;
-}
-
 }  // namespace sqdem

@@ -213,7 +213,14 @@ void World::step() {
     kick(p, i, 0.5 * h);
     drift(p, i, h);
   }
-  for (Wall& w : walls_) w.plane.point += h * w.velocity;
+  for (std::size_t k = 0; k < walls_.size(); ++k) {
+    Wall& w = walls_[k];
+    if (w.servo) {
+      const double error = (w.servo->pressure - wallPressure(k)) / w.servo->pressure;
+      w.velocity = w.servo->maxSpeed * std::clamp(error, -1.0, 1.0) * w.plane.normal;
+    }
+    w.plane.point += h * w.velocity;
+  }
   time_ += h;
   timing_.integration += seconds(Clock::now() - start);
   computeForces();
@@ -221,6 +228,14 @@ void World::step() {
 #pragma omp parallel for schedule(static)
   for (std::ptrdiff_t i = 0; i < n; ++i) kick(p, i, 0.5 * h);
   timing_.integration += seconds(Clock::now() - kickStart);
+}
+
+double World::wallPressure(std::size_t w) const {
+  const Wall& wall = walls_.at(w);
+  int axis;
+  wall.plane.normal.cwiseAbs().maxCoeff(&axis);
+  const Vec3 L = domain_.length();
+  return std::abs(wall.force.dot(wall.plane.normal)) / (L.prod() / L(axis));
 }
 
 double World::kineticEnergy() const {

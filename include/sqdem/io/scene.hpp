@@ -68,6 +68,8 @@ struct StageSpec {
   double viscousDamping = 0.0;      ///< background drag c (1/s), F = -c m v
   std::optional<std::size_t> wall;  ///< wall moved in this stage
   Vec3 wallVelocity = Vec3::Zero(); ///< its velocity during the stage (m/s)
+  std::optional<std::size_t> servoWall;  ///< wall under force control in this stage
+  WallServo servo;
 };
 
 struct OutputSpec {

@@ -26,9 +26,6 @@ struct PackingMeasures {
   double betweenWallsFraction = 0.0;   ///< 0 without a pair of opposed z walls
 };
 
-/// Normal pressure on wall w: |F . n| over the box cross-section normal to the wall's dominant
-/// axis (Pa).
-double wallPressure(const World& world, std::size_t w);
 
 PackingMeasures measurePacking(const World& world);
 

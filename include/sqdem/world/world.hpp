@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <iosfwd>
+#include <optional>
 #include <ranges>
 #include <vector>
 
@@ -29,12 +30,22 @@ struct Material {
   double restitution = 1.0;    ///< e (-), pair value = min of the two
 };
 
-/// An infinite plane moving with constant velocity; `force` is what the particles exert on it.
+/// Force control of a wall: before each step the wall moves along its normal with
+/// v = max_speed clamp((p_target - p) / p_target, -1, 1), p its current normal pressure
+/// (proportional control; the wall advances into the particles while p < p_target).
+struct WallServo {
+  double pressure = 0.0;  ///< target normal pressure (Pa), > 0
+  double maxSpeed = 0.0;  ///< (m/s), > 0
+};
+
+/// An infinite plane moving with a prescribed velocity or under servo control; `force` is what
+/// the particles exert on it.
 struct Wall {
   Plane plane;
   Vec3 velocity = Vec3::Zero();  ///< (m/s)
   std::uint32_t material = 0;
   Vec3 force = Vec3::Zero();     ///< (N), from the last force computation
+  std::optional<WallServo> servo;
 };
 
 inline constexpr std::uint32_t wallFlag = 0x80000000u;
@@ -117,6 +128,10 @@ class World {
   void writeState(std::ostream& out) const;
   /// Throws std::runtime_error if the checkpoint does not match this world.
   void readState(std::istream& in);
+
+  /// Normal pressure on wall w: |F . n| over the box cross-section normal to the wall's
+  /// dominant axis (Pa).
+  double wallPressure(std::size_t w) const;
 
   double kineticEnergy() const;
   /// Rayleigh time (000 Eq. 71) of the particle with the smallest semi-axis (s); scenes use a
