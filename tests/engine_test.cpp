@@ -10,6 +10,7 @@
 
 #include "sqdem/io/scene.hpp"
 #include "sqdem/world/build_world.hpp"
+#include "sqdem/world/packing_measures.hpp"
 
 namespace sqdem {
 namespace {
@@ -90,6 +91,12 @@ TEST(Engine, RestingBedWallForceEqualsWeight) {
               -world.walls()[0].force.z() / weight - 1.0, world.kineticEnergy(), world.contacts().size());
   EXPECT_LT(error, 1e-3);
   EXPECT_EQ(world.statistics().detectorFailures, 0);
+  // Virial identity of a static bed on the wall z = 0: sigma_zz V = sum m g z_i.
+  const PackingMeasures m = measurePacking(world);
+  double moment = 0.0;
+  for (std::size_t i = 0; i < world.particles().size(); ++i) moment += world.particles().mass[i] * 9.81 * world.particles().position[i].z();
+  std::printf("sigma_zz V / sum(m g z) - 1 = %.3g\n", m.stress(2, 2) * m.stressVolume / moment - 1.0);
+  EXPECT_NEAR(m.stress(2, 2) * m.stressVolume, moment, 2e-3 * moment);
 }
 
 // A checkpoint restores the state so that the continuation is bitwise identical.

@@ -53,7 +53,8 @@ class CsvLog {
  public:
   CsvLog(fs::path path, std::size_t walls) : path_(std::move(path)) {
     text_.precision(12);
-    text_ << "time,step,stage,kinetic_energy,contacts,mean_coordination,solid_fraction,bed_height,detector_failures";
+    text_ << "time,step,stage,kinetic_energy,contacts,mean_coordination,solid_fraction,bed_height,detector_failures"
+             ",stress_xx,stress_yy,stress_zz,stress_xy,stress_xz,stress_yz";
     for (std::size_t w = 0; w < walls; ++w) text_ << ",wall" << w << "_z,wall" << w << "_fx,wall" << w << "_fy,wall" << w << "_fz";
     text_ << "\n";
   }
@@ -62,6 +63,7 @@ class CsvLog {
     text_ << world.time() << ',' << step << ',' << stage << ',' << world.kineticEnergy() << ',' << world.contacts().size()
           << ',' << m.meanCoordination << ',' << m.solidFraction << ',' << m.bedHeight << ','
           << world.statistics().detectorFailures;
+    for (const auto& [i, j] : {std::pair{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}}) text_ << ',' << m.stress(i, j);
     for (const Wall& w : world.walls()) {
       text_ << ',' << w.plane.point.z() << ',' << w.force.x() << ',' << w.force.y() << ',' << w.force.z();
     }

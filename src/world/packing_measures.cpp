@@ -59,11 +59,18 @@ PackingMeasures measurePacking(const World& world) {
     if (w.plane.normal.z() > 0.999) floor = &w;
     if (w.plane.normal.z() < -0.999) ceiling = &w;
   }
+  const double base = d.length().x() * d.length().y();
+  m.stressVolume = base * equivalentHeight;
   if (floor && ceiling) {
-    double total = 0.0;
-    for (std::size_t i = 0; i < p.size(); ++i) total += world.shapes()[p.shape[i]].volume();
-    m.betweenWallsFraction = total / (d.length().x() * d.length().y() * (ceiling->plane.point.z() - floor->plane.point.z()));
+    m.stressVolume = base * (ceiling->plane.point.z() - floor->plane.point.z());
+    m.betweenWallsFraction = volumeTotal / m.stressVolume;
   }
+  for (const Contact& c : world.contacts()) {
+    const Vec3 branch = c.onWall() ? Vec3(0.5 * (c.geometry.pointA + c.geometry.pointB) - p.position[c.a])
+                                   : Vec3(p.position[c.b] + c.shift - p.position[c.a]);
+    m.stress += branch * c.force.onB.transpose();
+  }
+  m.stress = 0.5 * (m.stress + m.stress.transpose()) / m.stressVolume;
 
   const std::vector<int> z = coordinationNumbers(world);
   long total = 0, nonRattlerTotal = 0, nonRattlers = 0;

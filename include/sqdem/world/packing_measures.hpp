@@ -10,6 +10,10 @@
 //                        [z_bottom, highest particle top];
 //   between-walls fraction  with a bottom (+z) and a top (-z) wall: all particle volume over
 //                        Lx Ly (z_top wall - z_bottom wall), the compressed-box measure;
+//   assembly stress      sigma = (1/V) sum_contacts l (x) f (Love-Weber, compression positive,
+//                        symmetrised): l = x_b - x_a (periodic image) and f the force on b for
+//                        particle pairs, l = x_c - x_a and f the force on the wall for wall
+//                        contacts; V = Lx Ly (wall gap, or H for a bed)
 //   mean coordination    2 N_pp / N over all particles (particle-particle contacts; walls and
 //                        rattlers included), and over particles with >= 2 contacts.
 
@@ -24,6 +28,8 @@ struct PackingMeasures {
   double meanCoordinationNonRattlers = 0.0;
   double bedHeight = 0.0;              ///< z_top - z_bottom (m)
   double betweenWallsFraction = 0.0;   ///< 0 without a pair of opposed z walls
+  Mat3 stress = Mat3::Zero();          ///< (Pa), compression positive
+  double stressVolume = 0.0;           ///< V of the stress average (m^3)
 };
 
 
