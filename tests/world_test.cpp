@@ -105,7 +105,7 @@ TEST(World, DampedSphereWallImpactReproducesRestitution) {
     const Material m{1e8, 0.25, 2500.0, 0.0, e};
     World world({Superquadric::sphere(1e-3)}, {m}, bigBox(), 1e-4);
     world.setContactModel(0, 0, world.defaultContactModel(0, 0));
-    world.addWall({Plane{Vec3::Zero(), Vec3::UnitZ()}, Vec3::Zero(), 0});
+    world.addWall(Wall{.plane = Plane{Vec3::Zero(), Vec3::UnitZ()}});
     world.addParticle(0, 0, Vec3(0.0, 0.0, 1.05e-3), Quat::Identity());
     world.particles().velocity[0] = Vec3(0.0, 0.0, -1.0);
     world.setTimeStep(2e-8);
@@ -135,7 +135,7 @@ Impact adhesiveImpact(double youngs, double surfaceEnergy) {
   ContactModel law = world.defaultContactModel(0, 0);
   law.surfaceEnergy = surfaceEnergy;
   world.setContactModel(0, 0, law);
-  world.addWall({Plane{Vec3::Zero(), Vec3::UnitZ()}, Vec3::Zero(), 0});
+  world.addWall(Wall{.plane = Plane{Vec3::Zero(), Vec3::UnitZ()}});
   world.addParticle(0, 0, Vec3(0.0, 0.0, 1.0001 * R), Quat::Identity());
   world.particles().velocity[0] = Vec3(0.0, 0.0, -v0);
   const double m = world.particles().mass[0];

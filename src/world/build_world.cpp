@@ -100,7 +100,13 @@ World buildWorld(const Scene& scene) {
     minScale = std::min(minScale, in.stiffnessScale);
     world.setContactModel(in.materialA, in.materialB, model);
   }
-  for (const WallSpec& w : scene.walls) world.addWall({Plane{w.point, w.normal}, w.velocity, w.material});
+  for (const WallSpec& spec : scene.walls) {
+    Wall wall;
+    wall.plane = Plane{spec.point, spec.normal};
+    wall.velocity = spec.velocity;
+    wall.material = spec.material;
+    world.addWall(wall);
+  }
   for (std::size_t i = 0; i < shapes.size(); ++i) {
     world.addParticle(static_cast<std::uint32_t>(i), materialOf[i], centres[i], orientations[i]);
   }
