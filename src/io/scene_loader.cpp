@@ -144,7 +144,7 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
   const Reader r(path);
   Scene scene;
   scene.path = path;
-  r.allowOnly(root, "", {"seed", "domain", "gravity", "time_step", "time_step_fraction", "skin", "materials",
+  r.allowOnly(root, "", {"seed", "domain", "gravity", "time_step", "time_step_fraction", "skin", "reorder_every", "materials",
                          "shapes", "interactions", "walls", "insert", "stages", "output"});
   if (root["seed"]) {
     const double seed = r.asNumber(root["seed"], "seed");
@@ -178,6 +178,11 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
   if (!(scene.timeStepFraction > 0.0 && scene.timeStepFraction <= 1.0)) r.fail(root["time_step_fraction"], "time_step_fraction", "must be in (0, 1]");
   scene.skin = r.number(root, "skin", "", 0.0);
   if (scene.skin < 0.0) r.fail(root["skin"], "skin", "must be >= 0 (m)");
+  const double reorder = r.number(root, "reorder_every", "", 20.0);
+  if (!(reorder >= 0 && reorder <= 1e6) || reorder != std::floor(reorder)) {
+    r.fail(root["reorder_every"], "reorder_every", "must be an integer >= 0 (neighbour-list builds; 0 = off)");
+  }
+  scene.reorderEvery = static_cast<int>(reorder);
 
   const YAML::Node materials = root["materials"];
   if (!materials || !materials.IsMap() || materials.size() == 0) r.fail(materials ? materials : root, "materials", "missing (a mapping name -> properties)");

@@ -88,6 +88,7 @@ World buildWorld(const Scene& scene) {
                                                    return a.volumeEquivalentRadius() < b.volumeEquivalentRadius();
                                                  })->volumeEquivalentRadius();
   World world(shapes, materials, scene.domain, scene.skin > 0.0 ? scene.skin : 0.2 * smallest);
+  world.setReorderInterval(scene.reorderEvery);
   double minScale = 1.0;
   for (const InteractionSpec& in : scene.interactions) {
     ContactModel model = world.defaultContactModel(in.materialA, in.materialB);

@@ -114,7 +114,10 @@ void World::computeForces() {
   }
   const auto start = Clock::now();
   ParticleStore& p = particles_;
-  if (cellList_.needsRebuild(p)) cellList_.rebuild(p, boundingRadius_);
+  if (cellList_.needsRebuild(p)) {
+    if (reorderInterval_ > 0 && cellList_.builds() % reorderInterval_ == 0) reorderAlongHilbertCurve();
+    cellList_.rebuild(p, boundingRadius_);
+  }
 
   // Candidates in key order (a, then b with walls after particles): for each particle its pairs
   // from the cell list (sorted by (a, b)), then the walls within reach.

@@ -14,7 +14,7 @@
 namespace sqdem {
 namespace {
 
-constexpr char magic[8] = {'s', 'q', 'd', 'e', 'm', 'c', 'k', '1'};
+constexpr char magic[8] = {'s', 'q', 'd', 'e', 'm', 'c', 'k', '2'};
 
 template <typename T>
 void put(std::ostream& out, const T& value) {
@@ -52,6 +52,11 @@ void World::writeState(std::ostream& out) const {
   put(out, static_cast<std::uint64_t>(walls_.size()));
   const ParticleStore& p = particles_;
   putVector(out, p.id);
+  putVector(out, p.shape);
+  putVector(out, p.material);
+  putVector(out, p.mass);
+  putVector(out, p.inertia);
+  putVector(out, boundingRadius_);
   putVector(out, p.position);
   putVector(out, p.orientation);
   putVector(out, p.velocity);
@@ -68,6 +73,7 @@ void World::writeState(std::ostream& out) const {
   put(out, statistics_);
   put(out, gravity_);
   put(out, viscousDamping_);
+  put(out, reorderInterval_);
   put(out, dt_);
   put(out, time_);
   put(out, forcesCurrent_);
@@ -89,6 +95,11 @@ void World::readState(std::istream& in) {
   ParticleStore& p = particles_;
   const std::uint64_t limit = 1ull << 34;
   getVector(in, p.id, n);
+  getVector(in, p.shape, n);
+  getVector(in, p.material, n);
+  getVector(in, p.mass, n);
+  getVector(in, p.inertia, n);
+  getVector(in, boundingRadius_, n);
   getVector(in, p.position, n);
   getVector(in, p.orientation, n);
   getVector(in, p.velocity, n);
@@ -109,6 +120,7 @@ void World::readState(std::istream& in) {
   get(in, statistics_);
   get(in, gravity_);
   get(in, viscousDamping_);
+  get(in, reorderInterval_);
   get(in, dt_);
   get(in, time_);
   get(in, forcesCurrent_);

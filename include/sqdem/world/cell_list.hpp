@@ -31,6 +31,8 @@ class CellList {
   void rebuild(ParticleStore& particles, const std::vector<double>& boundingRadius);
 
   const std::vector<CandidatePair>& pairs() const { return pairs_; }
+  /// Forces a rebuild at the next check (after the particles were re-ordered).
+  void invalidate() { reference_.clear(); }
   /// The build state, for checkpoints: positions at the last build and the candidate list.
   const std::vector<Vec3>& referencePositions() const { return reference_; }
   void restore(std::vector<Vec3> reference, std::vector<CandidatePair> pairs, int builds) {

@@ -94,6 +94,11 @@ class World {
   void addWall(const Wall& wall) { walls_.push_back(wall); }
 
   void setGravity(const Vec3& g) { gravity_ = g; }
+  /// Re-order the particle slots along a Hilbert curve every `rebuilds` neighbour-list builds
+  /// (0: never). Results then differ from an unordered run by round-off only (summation order).
+  void setReorderInterval(int rebuilds) { reorderInterval_ = rebuilds; }
+  /// Re-orders now (world_reorder.cpp); ids, contacts and their histories follow the particles.
+  void reorderAlongHilbertCurve();
   /// Background drag F = -c m v (c in 1/s, translation only; 0 = off): settling in a viscous
   /// medium with terminal velocity |g|/c, a declared packing aid.
   void setViscousDamping(double c) { viscousDamping_ = c; }
@@ -158,6 +163,7 @@ class World {
   StepTiming timing_;
   Vec3 gravity_ = Vec3::Zero();
   double viscousDamping_ = 0.0;
+  int reorderInterval_ = 0;
   double dt_ = 0.0, time_ = 0.0;
   bool forcesCurrent_ = false;
 };
