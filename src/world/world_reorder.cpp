@@ -41,19 +41,7 @@ void World::reorderAlongHilbertCurve() {
   std::vector<std::uint32_t> slotOf(order.size());
   for (std::uint32_t k = 0; k < order.size(); ++k) slotOf[order[k]] = k;
 
-  ParticleStore& p = particles_;
-  permute(p.id, order);
-  permute(p.shape, order);
-  permute(p.material, order);
-  permute(p.position, order);
-  permute(p.orientation, order);
-  permute(p.velocity, order);
-  permute(p.conjugateMomentum, order);
-  permute(p.angularVelocity, order);
-  permute(p.force, order);
-  permute(p.torque, order);
-  permute(p.mass, order);
-  permute(p.inertia, order);
+  ParticleStore::forEachArray(particles_, [&](auto& array) { permute(array, order); });
   permute(boundingRadius_, order);
 
   for (Contact& c : pairs_) {

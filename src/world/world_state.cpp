@@ -14,7 +14,7 @@
 namespace sqdem {
 namespace {
 
-constexpr char magic[8] = {'s', 'q', 'd', 'e', 'm', 'c', 'k', '2'};
+constexpr char magic[8] = {'s', 'q', 'd', 'e', 'm', 'c', 'k', '3'};
 
 template <typename T>
 void put(std::ostream& out, const T& value) {
@@ -50,20 +50,8 @@ void World::writeState(std::ostream& out) const {
   out.write(magic, sizeof magic);
   put(out, static_cast<std::uint64_t>(particles_.size()));
   put(out, static_cast<std::uint64_t>(walls_.size()));
-  const ParticleStore& p = particles_;
-  putVector(out, p.id);
-  putVector(out, p.shape);
-  putVector(out, p.material);
-  putVector(out, p.mass);
-  putVector(out, p.inertia);
+  ParticleStore::forEachArray(particles_, [&](const auto& array) { putVector(out, array); });
   putVector(out, boundingRadius_);
-  putVector(out, p.position);
-  putVector(out, p.orientation);
-  putVector(out, p.velocity);
-  putVector(out, p.conjugateMomentum);
-  putVector(out, p.angularVelocity);
-  putVector(out, p.force);
-  putVector(out, p.torque);
   putVector(out, walls_);
   putVector(out, pairs_);
   putVector(out, touching_);
@@ -92,21 +80,9 @@ void World::readState(std::istream& in) {
                              " walls; the scene builds " + std::to_string(particles_.size()) + " and " +
                              std::to_string(walls_.size()));
   }
-  ParticleStore& p = particles_;
   const std::uint64_t limit = 1ull << 34;
-  getVector(in, p.id, n);
-  getVector(in, p.shape, n);
-  getVector(in, p.material, n);
-  getVector(in, p.mass, n);
-  getVector(in, p.inertia, n);
+  ParticleStore::forEachArray(particles_, [&](auto& array) { getVector(in, array, n); });
   getVector(in, boundingRadius_, n);
-  getVector(in, p.position, n);
-  getVector(in, p.orientation, n);
-  getVector(in, p.velocity, n);
-  getVector(in, p.conjugateMomentum, n);
-  getVector(in, p.angularVelocity, n);
-  getVector(in, p.force, n);
-  getVector(in, p.torque, n);
   getVector(in, walls_, walls);
   getVector(in, pairs_, limit);
   getVector(in, touching_, limit);

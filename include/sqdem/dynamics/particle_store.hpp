@@ -32,6 +32,24 @@ struct ParticleStore {
 
   std::size_t size() const { return position.size(); }
 
+  /// Calls f(array) for every per-particle array, in a fixed order: the one list of them that
+  /// checkpoints and re-ordering use, so a new field cannot be forgotten there.
+  template <typename Store, typename F>
+  static void forEachArray(Store& store, F&& f) {
+    f(store.id);
+    f(store.shape);
+    f(store.material);
+    f(store.position);
+    f(store.orientation);
+    f(store.velocity);
+    f(store.conjugateMomentum);
+    f(store.angularVelocity);
+    f(store.force);
+    f(store.torque);
+    f(store.mass);
+    f(store.inertia);
+  }
+
   /// Appends a particle at rest-free initial state; returns its slot.
   std::size_t add(std::uint32_t shapeIndex, std::uint32_t materialIndex, const Vec3& centre, const Quat& q,
                   double particleMass, const Vec3& principalInertia);
