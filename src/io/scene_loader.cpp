@@ -4,7 +4,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <cmath>
-#include <map>
+#include <optional>
 #include <sstream>
 
 #include "sqdem/geometry/superquadric.hpp"
@@ -12,6 +12,16 @@
 
 namespace sqdem {
 namespace {
+
+/// "where.key", or "key" at the top level.
+std::string keyPath(const std::string& where, const std::string& key) { return where.empty() ? key : where + "." + key; }
+
+/// A number for a message: 1e+07 rather than 10000000.000000.
+std::string shortNumber(double x) {
+  std::ostringstream s;
+  s << x;
+  return s.str();
+}
 
 class Reader {
  public:
@@ -34,18 +44,18 @@ class Reader {
       if (!known) {
         std::string list;
         for (const char* k : keys) list += std::string(list.empty() ? "" : ", ") + k;
-        fail(entry.first, where.empty() ? key : where + "." + key, "unknown key (allowed: " + list + ")");
+        fail(entry.first, keyPath(where, key), "unknown key (allowed: " + list + ")");
       }
     }
   }
 
   double number(const YAML::Node& map, const std::string& key, const std::string& where) const {
     const YAML::Node v = map[key];
-    if (!v) fail(map, where + "." + key, "missing (a number is required)");
-    return asNumber(v, where + "." + key);
+    if (!v) fail(map, keyPath(where, key), "missing (a number is required)");
+    return asNumber(v, keyPath(where, key));
   }
   double number(const YAML::Node& map, const std::string& key, const std::string& where, double fallback) const {
-    return map[key] ? asNumber(map[key], where + "." + key) : fallback;
+    return map[key] ? asNumber(map[key], keyPath(where, key)) : fallback;
   }
   double asNumber(const YAML::Node& v, const std::string& key) const {
     double x;
@@ -54,14 +64,31 @@ class Reader {
   }
   double positive(const YAML::Node& map, const std::string& key, const std::string& where, const char* unit) const {
     const double x = number(map, key, where);
-    if (!(x > 0.0)) fail(map[key], where + "." + key, std::string("must be > 0 (") + unit + ")");
+    if (!(x > 0.0)) fail(map[key], keyPath(where, key), std::string("must be > 0 (") + unit + ")");
     return x;
+  }
+  /// An integer-valued number in [lo, hi]; `fallback` when the key is absent (required without).
+  double integer(const YAML::Node& map, const std::string& key, const std::string& where, double lo, double hi,
+                 std::optional<double> fallback = std::nullopt) const {
+    const double x = fallback ? number(map, key, where, *fallback) : number(map, key, where);
+    if (!(x >= lo && x <= hi) || x != std::floor(x)) {
+      fail(map[key], keyPath(where, key), "must be an integer in [" + shortNumber(lo) + ", " + shortNumber(hi) + "]");
+    }
+    return x;
+  }
+  /// The required key "wall": an index into the scene's walls.
+  std::size_t wallIndex(const YAML::Node& map, const std::string& where, std::size_t walls) const {
+    const double w = number(map, "wall", where);
+    if (!(w >= 0 && w < static_cast<double>(walls)) || w != std::floor(w)) {
+      fail(map["wall"], keyPath(where, "wall"), "must be a wall index in [0, " + std::to_string(walls) + ")");
+    }
+    return static_cast<std::size_t>(w);
   }
   Vec3 vector(const YAML::Node& map, const std::string& key, const std::string& where) const {
     const YAML::Node v = map[key];
-    if (!v) fail(map, where + "." + key, "missing ([x, y, z] required)");
-    if (!v.IsSequence() || v.size() != 3) fail(v, where + "." + key, "must be a list of three numbers [x, y, z]");
-    return {asNumber(v[0], where + "." + key), asNumber(v[1], where + "." + key), asNumber(v[2], where + "." + key)};
+    if (!v) fail(map, keyPath(where, key), "missing ([x, y, z] required)");
+    if (!v.IsSequence() || v.size() != 3) fail(v, keyPath(where, key), "must be a list of three numbers [x, y, z]");
+    return {asNumber(v[0], keyPath(where, key)), asNumber(v[1], keyPath(where, key)), asNumber(v[2], keyPath(where, key))};
   }
   std::array<double, 2> range(const YAML::Node& v, const std::string& key) const {
     if (v.IsScalar()) {
@@ -75,13 +102,13 @@ class Reader {
   }
   std::string text(const YAML::Node& map, const std::string& key, const std::string& where) const {
     const YAML::Node v = map[key];
-    if (!v || !v.IsScalar()) fail(v ? v : map, where + "." + key, "missing or not a string");
+    if (!v || !v.IsScalar()) fail(v ? v : map, keyPath(where, key), "missing or not a string");
     return v.as<std::string>();
   }
   bool flag(const YAML::Node& map, const std::string& key, const std::string& where, bool fallback) const {
     if (!map[key]) return fallback;
     bool b;
-    if (!YAML::convert<bool>::decode(map[key], b)) fail(map[key], where + "." + key, "must be true or false");
+    if (!YAML::convert<bool>::decode(map[key], b)) fail(map[key], keyPath(where, key), "must be true or false");
     return b;
   }
   template <typename T>
@@ -146,11 +173,7 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
   scene.path = path;
   r.allowOnly(root, "", {"seed", "domain", "gravity", "time_step", "time_step_fraction", "skin", "reorder_every", "materials",
                          "shapes", "interactions", "walls", "insert", "stages", "output"});
-  if (root["seed"]) {
-    const double seed = r.asNumber(root["seed"], "seed");
-    if (seed < 0 || seed != std::floor(seed)) r.fail(root["seed"], "seed", "must be a non-negative integer");
-    scene.seed = static_cast<std::uint64_t>(seed);
-  }
+  scene.seed = static_cast<std::uint64_t>(r.integer(root, "seed", "", 0.0, 1e18, 1.0));
 
   const YAML::Node domain = root["domain"];
   if (!domain) r.fail(root, "domain", "missing ({lo: [x,y,z], hi: [x,y,z], periodic: [x, y]})");
@@ -178,11 +201,7 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
   if (!(scene.timeStepFraction > 0.0 && scene.timeStepFraction <= 1.0)) r.fail(root["time_step_fraction"], "time_step_fraction", "must be in (0, 1]");
   scene.skin = r.number(root, "skin", "", 0.0);
   if (scene.skin < 0.0) r.fail(root["skin"], "skin", "must be >= 0 (m)");
-  const double reorder = r.number(root, "reorder_every", "", 20.0);
-  if (!(reorder >= 0 && reorder <= 1e6) || reorder != std::floor(reorder)) {
-    r.fail(root["reorder_every"], "reorder_every", "must be an integer >= 0 (neighbour-list builds; 0 = off)");
-  }
-  scene.reorderEvery = static_cast<int>(reorder);
+  scene.reorderEvery = static_cast<int>(r.integer(root, "reorder_every", "", 0.0, 1e6, 20.0));
 
   const YAML::Node materials = root["materials"];
   if (!materials || !materials.IsMap() || materials.size() == 0) r.fail(materials ? materials : root, "materials", "missing (a mapping name -> properties)");
@@ -259,9 +278,7 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
     const YAML::Node in = insert[k];
     r.allowOnly(in, where, {"count", "shape", "material", "region", "random_orientation"});
     InsertionSpec spec;
-    const double count = r.number(in, "count", where);
-    if (!(count >= 1 && count <= 1e7) || count != std::floor(count)) r.fail(in["count"], where + ".count", "must be an integer in [1, 1e7]");
-    spec.count = static_cast<std::size_t>(count);
+    spec.count = static_cast<std::size_t>(r.integer(in, "count", where, 1.0, 1e7));
     if (!in["shape"]) r.fail(in, where + ".shape", "missing");
     if (!in["material"]) r.fail(in, where + ".material", "missing");
     spec.shape = r.lookup(in["shape"], where + ".shape", scene.shapes, "shape");
@@ -298,33 +315,19 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
       }
       if (stop["wall_pressure"]) {
         spec.wallPressure = r.positive(stop, "wall_pressure", where + ".stop", "Pa");
-        const double w = r.number(stop, "wall", where + ".stop");
-        if (w < 0 || w >= static_cast<double>(scene.walls.size()) || w != std::floor(w)) {
-          r.fail(stop["wall"], where + ".stop.wall", "must be a wall index in [0, " + std::to_string(scene.walls.size()) + ")");
-        }
-        spec.pressureWall = static_cast<std::size_t>(w);
+        spec.pressureWall = r.wallIndex(stop, where + ".stop", scene.walls.size());
       }
       spec.minimumDuration = r.number(stop, "after", where + ".stop", 0.0);
     }
     if (const YAML::Node move = st["move_wall"]) {
       r.allowOnly(move, where + ".move_wall", {"wall", "velocity"});
-      const double w = r.number(move, "wall", where + ".move_wall");
-      if (w < 0 || w >= static_cast<double>(scene.walls.size()) || w != std::floor(w)) {
-        r.fail(move["wall"], where + ".move_wall.wall", "must be a wall index in [0, " + std::to_string(scene.walls.size()) + ")");
-      }
-      spec.wall = static_cast<std::size_t>(w);
+      spec.wall = r.wallIndex(move, where + ".move_wall", scene.walls.size());
       spec.wallVelocity = r.vector(move, "velocity", where + ".move_wall");
     }
     if (const YAML::Node servo = st["servo_wall"]) {
       r.allowOnly(servo, where + ".servo_wall", {"wall", "pressure", "max_speed"});
-      const double w = r.number(servo, "wall", where + ".servo_wall");
-      if (w < 0 || w >= static_cast<double>(scene.walls.size()) || w != std::floor(w)) {
-        r.fail(servo["wall"], where + ".servo_wall.wall", "must be a wall index in [0, " + std::to_string(scene.walls.size()) + ")");
-      }
-      if (spec.wall && *spec.wall == static_cast<std::size_t>(w)) {
-        r.fail(servo, where + ".servo_wall", "the same wall cannot also be in move_wall");
-      }
-      spec.servoWall = static_cast<std::size_t>(w);
+      spec.servoWall = r.wallIndex(servo, where + ".servo_wall", scene.walls.size());
+      if (spec.wall == spec.servoWall) r.fail(servo, where + ".servo_wall", "the same wall cannot also be in move_wall");
       spec.servo.pressure = r.positive(servo, "pressure", where + ".servo_wall", "Pa");
       spec.servo.maxSpeed = r.positive(servo, "max_speed", where + ".servo_wall", "m/s");
     }
@@ -333,12 +336,8 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
 
   if (const YAML::Node out = root["output"]) {
     r.allowOnly(out, "output", {"frames", "log_every", "contacts"});
-    const double frames = r.number(out, "frames", "output", 20.0);
-    if (!(frames >= 0 && frames <= 1e5) || frames != std::floor(frames)) r.fail(out["frames"], "output.frames", "must be an integer in [0, 1e5]");
-    scene.output.frames = static_cast<std::size_t>(frames);
-    const double every = r.number(out, "log_every", "output", 0.0);
-    if (every < 0 || every != std::floor(every)) r.fail(out["log_every"], "output.log_every", "must be a non-negative integer (steps)");
-    scene.output.logEvery = static_cast<std::size_t>(every);
+    scene.output.frames = static_cast<std::size_t>(r.integer(out, "frames", "output", 0.0, 1e5, 20.0));
+    scene.output.logEvery = static_cast<std::size_t>(r.integer(out, "log_every", "output", 0.0, 1e12, 0.0));
     scene.output.contacts = r.flag(out, "contacts", "output", true);
   }
   return scene;
