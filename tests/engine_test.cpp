@@ -45,6 +45,16 @@ stages:
   - {name: settle, duration: 0.2}
 )";
 
+/// The scene's world after `steps` steps under gravity and a background drag (1/s) that keeps
+/// the pour gentle; the drag stays on.
+World pouredBed(const Scene& scene, double drag, int steps) {
+  World world = buildWorld(scene);
+  world.setGravity(scene.gravity);
+  world.setViscousDamping(drag);
+  for (int s = 0; s < steps; ++s) world.step();
+  return world;
+}
+
 struct BedState {
   std::vector<Vec3> positions;
   std::size_t contacts;
@@ -52,11 +62,8 @@ struct BedState {
 
 BedState runBed(int threads, int steps) {
   omp_set_num_threads(threads);
-  const Scene scene = loadScene(writeScene("bed", bedScene));
-  World world = buildWorld(scene);
-  world.setGravity(scene.gravity);
-  world.setViscousDamping(50.0);  // terminal velocity 0.2 m/s: the bed forms within the run
-  for (int s = 0; s < steps; ++s) world.step();
+  // Terminal velocity 0.2 m/s: the bed forms within the run.
+  const World world = pouredBed(loadScene(writeScene("bed", bedScene)), 50.0, steps);
   return {world.particles().position, world.contacts().size()};
 }
 
@@ -74,12 +81,8 @@ TEST(Engine, ResultsDoNotDependOnTheThreadCount) {
 // Newton's third law and equilibrium: once the bed is at rest, the bottom wall carries the
 // weight of all particles, sum m g, within 0.1 %.
 TEST(Engine, RestingBedWallForceEqualsWeight) {
-  const Scene scene = loadScene(writeScene("bed", bedScene));
-  World world = buildWorld(scene);
-  world.setGravity(scene.gravity);
-  world.setViscousDamping(200.0);  // pour gently,
-  for (int s = 0; s < 40000; ++s) world.step();
-  world.setViscousDamping(0.0);    // then rest under contact damping alone
+  World world = pouredBed(loadScene(writeScene("bed", bedScene)), 200.0, 40000);  // pour gently,
+  world.setViscousDamping(0.0);  // then rest under contact damping alone
   double weight = 0.0;
   for (double m : world.particles().mass) weight += m * 9.81;
   double error = 1.0;
@@ -102,10 +105,7 @@ TEST(Engine, RestingBedWallForceEqualsWeight) {
 // A checkpoint restores the state so that the continuation is bitwise identical.
 TEST(Engine, CheckpointRestartContinuesBitwise) {
   const Scene scene = loadScene(writeScene("bed", bedScene));
-  World original = buildWorld(scene);
-  original.setGravity(scene.gravity);
-  original.setViscousDamping(50.0);
-  for (int s = 0; s < 30000; ++s) original.step();
+  World original = pouredBed(scene, 50.0, 30000);
   std::stringstream checkpoint;
   original.writeState(checkpoint);
   for (int s = 0; s < 5000; ++s) original.step();
@@ -131,11 +131,7 @@ TEST(Engine, ServoWallHoldsItsPressure) {
   const std::string lidded = replaced(bedScene, "  - {point: [0, 0, 0], normal: [0, 0, 1], material: glass}\n",
                                       "  - {point: [0, 0, 0], normal: [0, 0, 1], material: glass}\n"
                                       "  - {point: [0, 0, 11.8e-3], normal: [0, 0, -1], material: glass}\n");
-  const Scene scene = loadScene(writeScene("lid", lidded));
-  World world = buildWorld(scene);
-  world.setGravity(scene.gravity);
-  world.setViscousDamping(200.0);
-  for (int s = 0; s < 40000; ++s) world.step();
+  World world = pouredBed(loadScene(writeScene("lid", lidded)), 200.0, 40000);
   world.setViscousDamping(0.0);
   const double target = 50.0;  // Pa, about twice the bed's own weight per area
   world.walls()[1].servo = WallServo{target, 0.02};
@@ -159,11 +155,7 @@ TEST(Engine, ServoWallHoldsItsPressure) {
 // histories: forces per particle id are unchanged to round-off (summation order changes), and
 // so is a short continuation.
 TEST(Engine, HilbertReorderingKeepsForcesAndHistories) {
-  const Scene scene = loadScene(writeScene("bed", bedScene));
-  World original = buildWorld(scene);
-  original.setGravity(scene.gravity);
-  original.setViscousDamping(50.0);
-  for (int s = 0; s < 30000; ++s) original.step();
+  World original = pouredBed(loadScene(writeScene("bed", bedScene)), 50.0, 30000);
   World reordered = original;
   reordered.reorderAlongHilbertCurve();
   ASSERT_NE(reordered.particles().id, original.particles().id);  // the order did change
