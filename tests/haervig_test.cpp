@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "sqdem/mechanics/elliptic.hpp"
 #include "sqdem/mechanics/haervig.hpp"
 
 namespace sqdem {
@@ -50,7 +51,7 @@ TEST(Haervig, ReducedStiffnessRuleKeepsTheSeparationEnergy) {
 // Eq. 17: the tangential force never exceeds mu |F_N + 2 F_C|, and after sliding the spring is
 // consistent with the capped force; below the cap F_t = -S_t s (Eq. 14).
 TEST(Haervig, TangentialForceIsCappedByAdhesiveCoulombLimit) {
-  const HaervigTangential t{haervigShearModulus(1e9, 0.3, 1e9, 0.3), 1e-6, 1e-12, 0.0, 0.3};
+  const HaervigTangential t{effectiveShearModulus(1e9, 0.3, 1e9, 0.3), 1e-6, 1e-12, 0.0, 0.3};
   const double overlap = 1e-9, normal = -2e-7, critical = 1e-6;
   Vec3 spring = Vec3::Zero();
   const Vec3 small = t.force(spring, Vec3(1e-12, 0, 0), Vec3::Zero(), overlap, normal, critical);

@@ -150,15 +150,14 @@ DisplacementPath readPath(const json& input, double meanRadiusSum) {
 /// Elliptic Mindlin-Deresiewicz (004 Eqs. 56-68) at the current normal force and area.
 struct TangentialDrive {
   double friction = 0.0, angle = 0.0;  ///< mu (-), theta (rad) to the ellipse's major axis
+  double e2 = 0.0;                     ///< the curve's contact-ellipse e^2 (fixed geometry)
   MindlinDeresiewiczHistory history;
 
-  double force(double displacement, const LawSample& normal, const RelativeRadii& radii,
-               const ContactMaterials& m) {
+  double force(double displacement, const LawSample& normal, const ContactMaterials& m) {
     if (normal.force <= 0.0 || !normal.area || *normal.area <= 0.0) {
       history = {};
       return 0.0;
     }
-    const double e2 = hertzFactors(radii.ratio(), EccentricityMethod::Exact).e2;
     const MindlinDeresiewicz law(m.effectiveShearModulus(), contactSemiMajorAxis(*normal.area, e2), e2,
                                  m.meanPoisson(), angle, friction, normal.force);
     return law.force(displacement, history);
@@ -279,6 +278,7 @@ int runContact(const std::string& inputPath, const fs::path& outDir) {
   std::vector<CurveResult> results;
   for (Curve& c : curves) {
     TangentialDrive tangential = tangentialTemplate;
+    tangential.e2 = hertzFactors(c.geometry.radii().ratio(), EccentricityMethod::Exact).e2;
     std::ostringstream csv;
     csv << "step,displacement,overlap,normal_force,contact_area,equivalent_contact_radius,regime";
     if (!path.tangential.empty()) csv << ",tangential_displacement,tangential_force";
@@ -293,7 +293,7 @@ int runContact(const std::string& inputPath, const fs::path& outDir) {
       else csv << ',';
       csv << ',' << s.regime;
       if (!path.tangential.empty()) {
-        const double ft = tangential.force(path.tangential[k], s, c.geometry.radii(), materials);
+        const double ft = tangential.force(path.tangential[k], s, materials);
         csv << ',' << csvNumber(path.tangential[k]) << ',' << csvNumber(ft);
         r.maxTangential = std::max(r.maxTangential, std::abs(ft));
       }

@@ -102,8 +102,7 @@ double ContactMaterials::effectiveModulus() const {
 }
 
 double ContactMaterials::effectiveShearModulus() const {
-  const double GA = youngsA / (2.0 * (1.0 + poissonA)), GB = youngsB / (2.0 * (1.0 + poissonB));
-  return 1.0 / ((2.0 - poissonA) / GA + (2.0 - poissonB) / GB);
+  return sqdem::effectiveShearModulus(youngsA, poissonA, youngsB, poissonB);
 }
 
 std::unique_ptr<DrivenLaw> makeDrivenLaw(const json& law, const std::string& where, const RelativeRadii& radii,

@@ -171,4 +171,9 @@ double effectiveModulus(double youngsA, double poissonA, double youngsB, double 
   return 1.0 / ((1.0 - poissonA * poissonA) / youngsA + (1.0 - poissonB * poissonB) / youngsB);
 }
 
+double effectiveShearModulus(double youngsA, double poissonA, double youngsB, double poissonB) {
+  const double GA = youngsA / (2.0 * (1.0 + poissonA)), GB = youngsB / (2.0 * (1.0 + poissonB));
+  return 1.0 / ((2.0 - poissonA) / GA + (2.0 - poissonB) / GB);
+}
+
 }  // namespace sqdem

@@ -34,11 +34,6 @@ double reducedStiffnessSurfaceEnergy(double surfaceEnergy, double youngs, double
   return surfaceEnergy * std::pow(reducedYoungs / youngs, 0.4);
 }
 
-double haervigShearModulus(double youngsA, double poissonA, double youngsB, double poissonB) {
-  const double GA = youngsA / (2.0 * (1.0 + poissonA)), GB = youngsB / (2.0 * (1.0 + poissonB));
-  return 1.0 / ((2.0 - poissonA) / GA + (2.0 - poissonB) / GB);
-}
-
 Vec3 HaervigTangential::force(Vec3& spring, const Vec3& increment, const Vec3& velocity, double overlap,
                               double normalForce, double criticalForce) const {
   if (overlap <= 0.0) {

@@ -29,9 +29,7 @@ ContactModel World::defaultContactModel(std::uint32_t ma, std::uint32_t mb) cons
   const Material &A = materials_.at(ma), &B = materials_.at(mb);
   ContactModel m;
   m.effectiveModulus = effectiveModulus(A.youngsModulus, A.poissonRatio, B.youngsModulus, B.poissonRatio);
-  const double GA = A.youngsModulus / (2.0 * (1.0 + A.poissonRatio));
-  const double GB = B.youngsModulus / (2.0 * (1.0 + B.poissonRatio));
-  m.effectiveShear = 1.0 / ((2.0 - A.poissonRatio) / GA + (2.0 - B.poissonRatio) / GB);
+  m.effectiveShear = effectiveShearModulus(A.youngsModulus, A.poissonRatio, B.youngsModulus, B.poissonRatio);
   m.friction = std::min(A.friction, B.friction);
   const double e = std::min(A.restitution, B.restitution);
   m.dampingRatio = e >= 1.0 ? 0.0 : restitutionDampingRatio(e);

@@ -75,5 +75,8 @@ double beckerHertzForce(double effectiveModulus, const BeckerFactors& f, double 
 
 /// E* = ((1 - nuA^2)/EA + (1 - nuB^2)/EB)^-1 (Pa), 004 after Eq. 2.
 double effectiveModulus(double youngsA, double poissonA, double youngsB, double poissonB);
+/// G* = ((2 - nuA)/GA + (2 - nuB)/GB)^-1 with G = E / (2 (1 + nu)) (Pa), 004 after Eq. 61 and
+/// 001 Eq. 15: the shear modulus of the Mindlin tangential stiffness 8 G* a.
+double effectiveShearModulus(double youngsA, double poissonA, double youngsB, double poissonB);
 
 }  // namespace sqdem

@@ -7,7 +7,8 @@
 //   normal force     F = 4 E* a^3/(3 R) - 4 sqrt(pi gamma E* a^3) (Eqs. 8-9, > 0 repulsive);
 //                    simplified JKR: the contact breaks as soon as delta < 0 on separation
 //   tangential       F_t = -S_t s - 2 sqrt(5/6) beta sqrt(S_t m) v_t, S_t = 8 G* sqrt(R delta),
-//                    1/G* = (2 - nu_i)/G_i + (2 - nu_j)/G_j, |F_t| <= mu |F_N + 2 F_C|  (Eqs. 14-17)
+//                    1/G* = (2 - nu_i)/G_i + (2 - nu_j)/G_j (effectiveShearModulus in elliptic.hpp),
+//                    |F_t| <= mu |F_N + 2 F_C|                                       (Eqs. 14-17)
 //   rolling          xi_crit = a_0/12 (dgamma/gamma), k_r = 4 F_C (a/a_0)^3/2, M_r = k_r xi,
 //                    |xi| <= xi_crit, F_C = 3 pi gamma R                              (Eqs. 18-22)
 //   reduced stiffness  gamma_mod = gamma (E_mod/E)^2/5 keeps the separation energy (Eq. 23,
@@ -37,8 +38,6 @@ class HaervigJkr {
 /// Eq. 24: the surface energy that keeps the separation energy when E is replaced by E_mod.
 double reducedStiffnessSurfaceEnergy(double surfaceEnergy, double youngs, double reducedYoungs);
 
-/// Effective shear modulus of Eq. 15 (Pa) from the two bodies' E and nu.
-double haervigShearModulus(double youngsA, double poissonA, double youngsB, double poissonB);
 
 /// Eqs. 14-17 with the spring displacement s as history (m). Adds the tangential displacement
 /// increment, returns the force; on sliding, s is reset to the value consistent with the cap.
