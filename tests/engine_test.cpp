@@ -80,6 +80,19 @@ TEST(Engine, ResultsDoNotDependOnTheThreadCount) {
 
 // Newton's third law and equilibrium: once the bed is at rest, the bottom wall carries the
 // weight of all particles, sum m g, within 0.1 %.
+// Both broad phases return the same sorted candidate list (neighbour_list_test.cpp), so a run
+// with FCL's AABB tree is bit for bit the run with the cell list.
+TEST(Engine, AabbTreeBroadPhaseGivesTheCellListRun) {
+  omp_set_num_threads(2);
+  const World cells = pouredBed(loadScene(writeScene("bed", bedScene)), 50.0, 40000);
+  const World tree = pouredBed(loadScene(writeScene("tree", replaced(bedScene, "seed: 7", "seed: 7\nbroad_phase: aabb_tree"))),
+                               50.0, 40000);
+  ASSERT_EQ(tree.neighbourList().search(), BroadPhase::AabbTree);
+  ASSERT_GT(cells.contacts().size(), 40u);
+  ASSERT_EQ(cells.particles().position, tree.particles().position);
+  ASSERT_EQ(cells.neighbourList().builds(), tree.neighbourList().builds());
+}
+
 TEST(Engine, RestingBedWallForceEqualsWeight) {
   World world = pouredBed(loadScene(writeScene("bed", bedScene)), 200.0, 40000);  // pour gently,
   world.setViscousDamping(0.0);  // then rest under contact damping alone

@@ -181,7 +181,7 @@ int runScene(const std::string& scenePath, fs::path outDir, int threads, const s
   const PackingMeasures m = measurePacking(world);
   std::printf("summary: %ld steps in %.2f s (%.3g particle-steps/s), %zu contacts, %d neighbour-list builds\n",
               totalSteps, wall, totalSteps * static_cast<double>(world.particles().size()) / wall,
-              world.contacts().size(), world.cellList().builds());
+              world.contacts().size(), world.neighbourList().builds());
   std::printf("detector: %lld calls, %.2f iterations per call, %lld unresolved, %lld deep overlaps\n",
               st.detectorCalls, st.detectorCalls ? static_cast<double>(st.detectorIterations) / st.detectorCalls : 0.0,
               st.detectorFailures, st.deepOverlaps);

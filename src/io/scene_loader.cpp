@@ -111,6 +111,19 @@ class Reader {
     if (!YAML::convert<bool>::decode(map[key], b)) fail(map[key], keyPath(where, key), "must be true or false");
     return b;
   }
+  /// A named option: `fallback` when the key is absent, else one of `options` (name, value).
+  template <typename E>
+  E choice(const YAML::Node& map, const std::string& key, const std::string& where,
+           std::initializer_list<std::pair<const char*, E>> options, E fallback) const {
+    if (!map[key]) return fallback;
+    const std::string name = map[key].IsScalar() ? map[key].as<std::string>() : "";
+    std::string list;
+    for (const auto& [option, value] : options) {
+      if (name == option) return value;
+      list += std::string(list.empty() ? "" : ", ") + option;
+    }
+    fail(map[key], keyPath(where, key), "allowed: " + list);
+  }
   template <typename T>
   std::uint32_t lookup(const YAML::Node& node, const std::string& key, const std::vector<T>& items, const char* what) const {
     const std::string name = node.IsScalar() ? node.as<std::string>() : "";
@@ -171,7 +184,7 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
   const Reader r(path);
   Scene scene;
   scene.path = path;
-  r.allowOnly(root, "", {"seed", "domain", "gravity", "time_step", "time_step_fraction", "skin", "reorder_every", "materials",
+  r.allowOnly(root, "", {"seed", "domain", "gravity", "time_step", "time_step_fraction", "skin", "broad_phase", "reorder_every", "materials",
                          "shapes", "interactions", "walls", "insert", "stages", "output"});
   scene.seed = static_cast<std::uint64_t>(r.integer(root, "seed", "", 0.0, 1e18, 1.0));
 
@@ -201,6 +214,8 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
   if (!(scene.timeStepFraction > 0.0 && scene.timeStepFraction <= 1.0)) r.fail(root["time_step_fraction"], "time_step_fraction", "must be in (0, 1]");
   scene.skin = r.number(root, "skin", "", 0.0);
   if (scene.skin < 0.0) r.fail(root["skin"], "skin", "must be >= 0 (m)");
+  scene.broadPhase = r.choice(root, "broad_phase", "", {{"cell_list", BroadPhase::CellList}, {"aabb_tree", BroadPhase::AabbTree}},
+                              BroadPhase::CellList);
   scene.reorderEvery = static_cast<int>(r.integer(root, "reorder_every", "", 0.0, 1e6, 20.0));
 
   const YAML::Node materials = root["materials"];
@@ -229,15 +244,13 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
     spec.materialB = r.lookup(pair[1], where + ".materials", scene.materials, "material");
     if (declared[spec.materialA * nm + spec.materialB]) r.fail(pair, where + ".materials", "this pair is declared twice");
     declared[spec.materialA * nm + spec.materialB] = declared[spec.materialB * nm + spec.materialA] = true;
-    const std::string normal = in["normal"] ? in["normal"].as<std::string>() : "elliptic_hertz";
-    if (normal == "elliptic_hertz") spec.normal = NormalLaw::EllipticHertz;
-    else if (normal == "volume_sphere_hertz") spec.normal = NormalLaw::VolumeSphereHertz;
-    else r.fail(in["normal"], where + ".normal", "allowed: elliptic_hertz, volume_sphere_hertz");
-    const std::string e2 = in["eccentricity"] ? in["eccentricity"].as<std::string>() : "tabulated";
-    if (e2 == "tabulated") spec.eccentricity = EccentricityMethod::Tabulated;
-    else if (e2 == "exact") spec.eccentricity = EccentricityMethod::Exact;
-    else if (e2 == "explicit") spec.eccentricity = EccentricityMethod::Explicit;
-    else r.fail(in["eccentricity"], where + ".eccentricity", "allowed: tabulated, exact, explicit");
+    spec.normal = r.choice(in, "normal", where,
+                           {{"elliptic_hertz", NormalLaw::EllipticHertz}, {"volume_sphere_hertz", NormalLaw::VolumeSphereHertz}},
+                           NormalLaw::EllipticHertz);
+    spec.eccentricity = r.choice(in, "eccentricity", where,
+                                 {{"tabulated", EccentricityMethod::Tabulated}, {"exact", EccentricityMethod::Exact},
+                                  {"explicit", EccentricityMethod::Explicit}},
+                                 EccentricityMethod::Tabulated);
     spec.capFactor = r.number(in, "cap_factor", where, 10.0);
     if (!(spec.capFactor > 0.0)) r.fail(in["cap_factor"], where + ".cap_factor", "must be > 0");
     spec.stiffnessScale = r.number(in, "reduced_stiffness", where, 1.0);

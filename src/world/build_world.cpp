@@ -87,7 +87,7 @@ World buildWorld(const Scene& scene) {
   const double smallest = shapes.empty() ? 0.0 : std::min_element(shapes.begin(), shapes.end(), [](const auto& a, const auto& b) {
                                                    return a.volumeEquivalentRadius() < b.volumeEquivalentRadius();
                                                  })->volumeEquivalentRadius();
-  World world(shapes, materials, scene.domain, scene.skin > 0.0 ? scene.skin : 0.2 * smallest);
+  World world(shapes, materials, scene.domain, scene.skin > 0.0 ? scene.skin : 0.2 * smallest, scene.broadPhase);
   world.setReorderInterval(scene.reorderEvery);
   double minScale = 1.0;
   for (const InteractionSpec& in : scene.interactions) {

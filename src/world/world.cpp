@@ -17,13 +17,14 @@ double seconds(Clock::duration d) { return std::chrono::duration<double>(d).coun
 
 }  // namespace
 
-World::World(std::vector<Superquadric> shapes, std::vector<Material> materials, const Domain& domain, double skin)
+World::World(std::vector<Superquadric> shapes, std::vector<Material> materials, const Domain& domain, double skin,
+             BroadPhase search)
     : shapes_(std::move(shapes)),
       materials_(std::move(materials)),
       models_(materials_.size() * materials_.size()),
       modelSet_(models_.size(), false),
       domain_(domain),
-      cellList_(domain, skin) {}
+      neighbours_(domain, skin, search) {}
 
 ContactModel World::defaultContactModel(std::uint32_t ma, std::uint32_t mb) const {
   const Material &A = materials_.at(ma), &B = materials_.at(mb);
@@ -73,7 +74,7 @@ void World::detect(Contact& c) const {
   const Superquadric& B = shapes_[p.shape[c.b]];
   const Pose poseB{p.position[c.b] + c.shift, p.orientation[c.b]};
   // Gaps within the skin are solved too, so that every candidate is warm-started next step.
-  const DetectorSettings settings{.cutoff = cellList_.skin(), .curvatures = curvatures};
+  const DetectorSettings settings{.cutoff = neighbours_.skin(), .curvatures = curvatures};
   c.geometry = c.geometry.converged() ? detectContact(A, poseA, B, poseB, settings, c.geometry)
                                       : detectContact(A, poseA, B, poseB, settings);
   c.separation = c.geometry.status == ContactStatus::Separated ? -c.geometry.overlap : 0.0;
@@ -112,18 +113,18 @@ void World::computeForces() {
   }
   const auto start = Clock::now();
   ParticleStore& p = particles_;
-  if (cellList_.needsRebuild(p)) {
-    if (reorderInterval_ > 0 && cellList_.builds() % reorderInterval_ == 0) reorderAlongHilbertCurve();
-    cellList_.rebuild(p, boundingRadius_);
+  if (neighbours_.needsRebuild(p)) {
+    if (reorderInterval_ > 0 && neighbours_.builds() % reorderInterval_ == 0) reorderAlongHilbertCurve();
+    neighbours_.rebuild(p, boundingRadius_);
   }
 
   // Candidates in key order (a, then b with walls after particles): for each particle its pairs
-  // from the cell list (sorted by (a, b)), then the walls within reach.
+  // from the neighbour list (sorted by (a, b)), then the walls within reach.
   std::vector<Contact> next;
-  next.reserve(cellList_.pairs().size() + pairs_.size());
-  const double skin = cellList_.skin();
-  auto pair = cellList_.pairs().begin();
-  const auto pairsEnd = cellList_.pairs().end();
+  next.reserve(neighbours_.pairs().size() + pairs_.size());
+  const double skin = neighbours_.skin();
+  auto pair = neighbours_.pairs().begin();
+  const auto pairsEnd = neighbours_.pairs().end();
   for (std::uint32_t i = 0; i < p.size(); ++i) {
     for (; pair != pairsEnd && pair->a == i; ++pair) {
       Contact& c = next.emplace_back();

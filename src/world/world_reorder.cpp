@@ -55,7 +55,7 @@ void World::reorderAlongHilbertCurve() {
   for (std::uint32_t k = 0; k < pairs_.size(); ++k) {
     if (pairs_[k].geometry.touching()) touching_.push_back(k);
   }
-  cellList_.invalidate();
+  neighbours_.invalidate();
 }
 
 }  // namespace sqdem

@@ -55,9 +55,9 @@ void World::writeState(std::ostream& out) const {
   putVector(out, walls_);
   putVector(out, pairs_);
   putVector(out, touching_);
-  putVector(out, cellList_.referencePositions());
-  putVector(out, cellList_.pairs());
-  put(out, cellList_.builds());
+  putVector(out, neighbours_.referencePositions());
+  putVector(out, neighbours_.pairs());
+  put(out, neighbours_.builds());
   put(out, statistics_);
   put(out, gravity_);
   put(out, viscousDamping_);
@@ -92,7 +92,7 @@ void World::readState(std::istream& in) {
   getVector(in, reference, n);
   getVector(in, candidates, limit);
   get(in, builds);
-  cellList_.restore(std::move(reference), std::move(candidates), builds);
+  neighbours_.restore(std::move(reference), std::move(candidates), builds);
   get(in, statistics_);
   get(in, gravity_);
   get(in, viscousDamping_);

@@ -86,6 +86,7 @@ struct Scene {
   std::optional<double> timeStep;  ///< explicit (s); otherwise timeStepFraction x Rayleigh time
   double timeStepFraction = 0.2;
   double skin = 0.0;               ///< Verlet skin (m); 0: 0.2 x smallest volume radius
+  BroadPhase broadPhase = BroadPhase::CellList;  ///< how candidate pairs are found
   int reorderEvery = 20;           ///< Hilbert re-ordering every N neighbour-list builds (0: off)
   std::vector<NamedMaterial> materials;
   std::vector<ShapeFamily> shapes;

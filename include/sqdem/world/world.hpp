@@ -1,7 +1,7 @@
 #pragma once
 // The World: particles, shapes, materials, the interaction table, walls, the persistent contact
 // list and the time step loop (DESIGN.md §2):
-//   half kick, drift (and walls move) -> broad phase (cell list, rebuilt when needed)
+//   half kick, drift (and walls move) -> broad phase (neighbour list, rebuilt when needed)
 //   -> narrow phase (detector, warm-started from the contact's history) -> contact law
 //   -> forces reduced per particle in contact order -> half kick.
 // Contacts are computed in parallel (OpenMP) into their own records and reduced serially in a
@@ -17,7 +17,7 @@
 #include "sqdem/dynamics/particle_store.hpp"
 #include "sqdem/geometry/plane.hpp"
 #include "sqdem/geometry/superquadric.hpp"
-#include "sqdem/world/cell_list.hpp"
+#include "sqdem/world/neighbour_list.hpp"
 #include "sqdem/world/contact_model.hpp"
 
 namespace sqdem {
@@ -75,7 +75,7 @@ struct WorldStatistics {
 /// Wall-clock seconds spent in each part of the step (accumulated).
 struct StepTiming {
   double integration = 0.0;  ///< kicks and drifts
-  double broadPhase = 0.0;   ///< cell list, candidate list, history carry-over
+  double broadPhase = 0.0;   ///< neighbour list, candidate list, history carry-over
   double detection = 0.0;    ///< common-normal detector
   double law = 0.0;          ///< contact laws
   double reduction = 0.0;    ///< forces and torques per particle, statistics
@@ -83,7 +83,9 @@ struct StepTiming {
 
 class World {
  public:
-  World(std::vector<Superquadric> shapes, std::vector<Material> materials, const Domain& domain, double skin);
+  /// skin (m): Verlet skin of the neighbour list; search: how candidate pairs are found.
+  World(std::vector<Superquadric> shapes, std::vector<Material> materials, const Domain& domain, double skin,
+        BroadPhase search = BroadPhase::CellList);
 
   /// Sets the law of a material pair (symmetric); every pair must be set before the first step.
   void setContactModel(std::uint32_t materialA, std::uint32_t materialB, const ContactModel& model);
@@ -124,7 +126,7 @@ class World {
   const Domain& domain() const { return domain_; }
   const WorldStatistics& statistics() const { return statistics_; }
   const StepTiming& timing() const { return timing_; }
-  const CellList& cellList() const { return cellList_; }
+  const NeighbourList& neighbourList() const { return neighbours_; }
 
   /// Checkpoint of the dynamic state (particles, walls, contact history, neighbour list,
   /// time, statistics) in a binary form for the same build; the static parts (shapes,
@@ -153,7 +155,7 @@ class World {
   std::vector<ContactModel> models_;
   std::vector<bool> modelSet_;
   Domain domain_;
-  CellList cellList_;
+  NeighbourList neighbours_;
   ParticleStore particles_;
   std::vector<double> boundingRadius_;
   std::vector<Wall> walls_;

@@ -1,40 +1,37 @@
-#include "sqdem/world/cell_list.hpp"
-
+// Cell-list search of the candidate pairs (neighbour_list.hpp).
 #include <algorithm>
+#include <array>
 #include <cmath>
 
+#include "sqdem/world/neighbour_list.hpp"
+
 namespace sqdem {
+namespace {
 
-bool CellList::needsRebuild(const ParticleStore& particles) const {
-  if (reference_.size() != particles.size()) return true;
-  const double limit = 0.25 * skin_ * skin_;
-  for (std::size_t i = 0; i < particles.size(); ++i) {
-    if ((particles.position[i] - reference_[i]).squaredNorm() > limit) return true;
-  }
-  return false;
-}
+/// Periodic directions with fewer cells than this are searched all-pairs (nearest image).
+constexpr int minimumPeriodicCells = 3;
 
-void CellList::rebuild(ParticleStore& particles, const std::vector<double>& boundingRadius) {
-  const std::size_t n = particles.size();
-  for (std::size_t i = 0; i < n; ++i) particles.position[i] = domain_.wrap(particles.position[i]);
-  reference_ = particles.position;
-  pairs_.clear();
-  ++builds_;
-  if (n < 2) return;
+}  // namespace
 
-  const double maxRadius = *std::max_element(boundingRadius.begin(), boundingRadius.end());
-  const double width = 2.0 * maxRadius + skin_;
+std::vector<CandidatePair> cellListPairs(const Domain& domain, const std::vector<Vec3>& position,
+                                         const std::vector<double>& radius, double skin) {
+  std::vector<CandidatePair> pairs;
+  const std::size_t n = position.size();
+  if (n < 2) return pairs;
+
+  const double maxRadius = *std::max_element(radius.begin(), radius.end());
+  const double width = 2.0 * maxRadius + skin;
   std::array<int, 3> cells{};
   Vec3 cellSize;
   for (int d = 0; d < 3; ++d) {
-    cells[d] = std::max(1, static_cast<int>(std::floor(domain_.length()(d) / width)));
-    if (domain_.periodic[d] && cells[d] < minimumPeriodicCells) cells[d] = 1;  // all-pairs along d
-    cellSize(d) = domain_.length()(d) / cells[d];
+    cells[d] = std::max(1, static_cast<int>(std::floor(domain.length()(d) / width)));
+    if (domain.periodic[d] && cells[d] < minimumPeriodicCells) cells[d] = 1;  // all-pairs along d
+    cellSize(d) = domain.length()(d) / cells[d];
   }
   const auto cellOf = [&](const Vec3& x) {
     std::array<int, 3> c{};
     for (int d = 0; d < 3; ++d) {
-      c[d] = std::clamp(static_cast<int>(std::floor((x(d) - domain_.lo(d)) / cellSize(d))), 0, cells[d] - 1);
+      c[d] = std::clamp(static_cast<int>(std::floor((x(d) - domain.lo(d)) / cellSize(d))), 0, cells[d] - 1);
     }
     return c;
   };
@@ -42,14 +39,14 @@ void CellList::rebuild(ParticleStore& particles, const std::vector<double>& boun
 
   // Counting sort of particles into cells (deterministic order: by slot within a cell).
   std::vector<int> start(static_cast<std::size_t>(cells[0]) * cells[1] * cells[2] + 1, 0), cellIndex(n);
-  for (std::size_t i = 0; i < n; ++i) ++start[(cellIndex[i] = flat(cellOf(particles.position[i]))) + 1];
+  for (std::size_t i = 0; i < n; ++i) ++start[(cellIndex[i] = flat(cellOf(position[i]))) + 1];
   for (std::size_t c = 1; c < start.size(); ++c) start[c] += start[c - 1];
   std::vector<std::uint32_t> sorted(n);
   std::vector<int> fill(start.begin(), start.end() - 1);
   for (std::size_t i = 0; i < n; ++i) sorted[fill[cellIndex[i]]++] = static_cast<std::uint32_t>(i);
 
   for (std::size_t i = 0; i < n; ++i) {
-    const std::array<int, 3> ci = cellOf(particles.position[i]);
+    const std::array<int, 3> ci = cellOf(position[i]);
     for (int dz = -1; dz <= 1; ++dz) {
       for (int dy = -1; dy <= 1; ++dy) {
         for (int dx = -1; dx <= 1; ++dx) {
@@ -65,8 +62,8 @@ void CellList::rebuild(ParticleStore& particles, const std::vector<double>& boun
             }
             cj[d] = ci[d] + offset[d];
             if (cj[d] < 0 || cj[d] >= cells[d]) {
-              if (!domain_.periodic[d]) { inside = false; continue; }
-              shift(d) = cj[d] < 0 ? -domain_.length()(d) : domain_.length()(d);
+              if (!domain.periodic[d]) { inside = false; continue; }
+              shift(d) = cj[d] < 0 ? -domain.length()(d) : domain.length()(d);
               cj[d] = (cj[d] + cells[d]) % cells[d];
             }
           }
@@ -78,22 +75,23 @@ void CellList::rebuild(ParticleStore& particles, const std::vector<double>& boun
             // A single periodic cell along d: take the nearest image of j.
             Vec3 s = shift;
             for (int d = 0; d < 3; ++d) {
-              if (cells[d] == 1 && domain_.periodic[d]) {
-                const double L = domain_.length()(d), dd = particles.position[j](d) - particles.position[i](d);
+              if (cells[d] == 1 && domain.periodic[d]) {
+                const double L = domain.length()(d), dd = position[j](d) - position[i](d);
                 s(d) = -L * std::round(dd / L);
               }
             }
-            const double reach = boundingRadius[i] + boundingRadius[j] + skin_;
-            if ((particles.position[j] + s - particles.position[i]).squaredNorm() < reach * reach) {
-              pairs_.push_back({static_cast<std::uint32_t>(i), j, s});
+            const double reach = radius[i] + radius[j] + skin;
+            if ((position[j] + s - position[i]).squaredNorm() < reach * reach) {
+              pairs.push_back({static_cast<std::uint32_t>(i), j, s});
             }
           }
         }
       }
     }
   }
-  std::sort(pairs_.begin(), pairs_.end(),
+  std::sort(pairs.begin(), pairs.end(),
             [](const CandidatePair& x, const CandidatePair& y) { return x.a != y.a ? x.a < y.a : x.b < y.b; });
+  return pairs;
 }
 
 }  // namespace sqdem
