@@ -217,6 +217,15 @@ TEST(Engine, SceneErrorsNameLineKeyAndWhatIsAllowed) {
                    "'interactions[0].normal': allowed: elliptic_hertz, volume_sphere_hertz");
   expectSceneError(replaced(bedScene, "periodic: [x, y]", "periodic: [x, w]"), "'domain.periodic': directions are x, y, z");
   expectSceneError(replaced(bedScene, "{name: settle, duration: 0.2}", "{name: settle}"), "'stages[0].duration': missing");
+  expectSceneError(replaced(bedScene, "  - materials: [glass, glass]\n", "  - materials: [glass, glass]\n    normal: volume_sphere_hertz\n    tangential: elliptic_mindlin\n"),
+                   "'interactions[0].tangential': elliptic_mindlin needs normal: elliptic_hertz (allowed here: circular_mindlin)");
+  expectSceneError(replaced(bedScene, "seed: 7", "seed: 7\nbroad_phase: octree"), "'broad_phase': allowed: cell_list, aabb_tree");
+  expectSceneError(replaced(bedScene, "grains: {volume_radius", "grains: {file: no_such_shape.yaml}\n  unused: {volume_radius"),
+                   "'shapes.grains.file': cannot open");
+  expectSceneError(replaced(bedScene, "{name: settle, duration: 0.2}", "{name: settle, duration: 0.2, move_wall: {wall: 0, path: [[0.1, 1e-3], [0.05, 0]]}}"),
+                   "'stages[0].move_wall.path': times must be > 0 and increasing (s)");
+  expectSceneError(replaced(bedScene, "{name: settle, duration: 0.2}", "{name: settle, duration: 0.2, move_wall: {wall: 0}}"),
+                   "'stages[0].move_wall': needs exactly one of velocity");
   expectSceneError("seed: [1", "not valid YAML");
   // A region too small for the particles is reported before anything runs.
   const Scene crowded = loadScene(writeScene("crowded", replaced(bedScene, "count: 60", "count: 5000")));

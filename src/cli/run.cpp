@@ -133,6 +133,11 @@ int runScene(const std::string& scenePath, fs::path outDir, int threads, const s
     const double stageStart = world.time();
     std::string reason = "duration reached";
     for (long s = 1; s <= steps; ++s) {
+      if (!stage.wallPath.points.empty()) {  // the velocity that lands the wall on its path at the step's end
+        Wall& w = world.walls()[*stage.wall];
+        const double t = world.time() - stageStart;
+        w.velocity = (stage.wallPath.offset(t + dt) - stage.wallPath.offset(t)) / dt * w.plane.normal;
+      }
       world.step();
       ++totalSteps;
       if (s % 100 == 0 && !finiteState(world.particles())) {

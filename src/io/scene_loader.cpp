@@ -4,6 +4,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <cmath>
+#include <filesystem>
 #include <optional>
 #include <sstream>
 
@@ -226,7 +227,26 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
   }
   const YAML::Node shapes = root["shapes"];
   if (!shapes || !shapes.IsMap() || shapes.size() == 0) r.fail(shapes ? shapes : root, "shapes", "missing (a mapping name -> shape)");
-  for (const auto& s : shapes) scene.shapes.push_back(readShape(r, s.second, s.first.as<std::string>()));
+  for (const auto& s : shapes) {
+    const std::string name = s.first.as<std::string>();
+    const YAML::Node file = s.second["file"];
+    if (!file) {
+      scene.shapes.push_back(readShape(r, s.second, name));
+      continue;
+    }
+    // A shape file (e.g. shapes/*.yaml): the same keys, its path relative to the scene file.
+    if (s.second.size() != 1 || !file.IsScalar()) r.fail(s.second, "shapes." + name, "give either 'file: path' alone or the shape's keys");
+    const std::string shapePath = (std::filesystem::path(path).parent_path() / file.as<std::string>()).string();
+    YAML::Node shape;
+    try {
+      shape = YAML::LoadFile(shapePath);
+    } catch (const YAML::BadFile&) {
+      r.fail(file, "shapes." + name + ".file", "cannot open '" + shapePath + "' (paths are relative to the scene file)");
+    } catch (const YAML::ParserException& e) {
+      throw SceneError(shapePath + ":" + std::to_string(e.mark.line + 1) + ": not valid YAML: " + e.msg);
+    }
+    scene.shapes.push_back(readShape(Reader(shapePath), shape, name));
+  }
 
   // Interactions: every material pair must be declared exactly once.
   const std::size_t nm = scene.materials.size();
@@ -236,7 +256,7 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
   for (std::size_t k = 0; k < interactions.size(); ++k) {
     const YAML::Node in = interactions[k];
     const std::string where = "interactions[" + std::to_string(k) + "]";
-    r.allowOnly(in, where, {"materials", "normal", "eccentricity", "cap_factor", "reduced_stiffness", "surface_energy"});
+    r.allowOnly(in, where, {"materials", "normal", "tangential", "eccentricity", "cap_factor", "reduced_stiffness", "surface_energy"});
     const YAML::Node pair = in["materials"];
     if (!pair || !pair.IsSequence() || pair.size() != 2) r.fail(pair ? pair : in, where + ".materials", "must be a pair [material, material]");
     InteractionSpec spec;
@@ -247,6 +267,14 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
     spec.normal = r.choice(in, "normal", where,
                            {{"elliptic_hertz", NormalLaw::EllipticHertz}, {"volume_sphere_hertz", NormalLaw::VolumeSphereHertz}},
                            NormalLaw::EllipticHertz);
+    // The elliptic tangential law needs the contact ellipse, which only the elliptic normal law has.
+    const bool elliptic = spec.normal == NormalLaw::EllipticHertz;
+    spec.tangential = r.choice(in, "tangential", where,
+                               {{"elliptic_mindlin", TangentialLaw::EllipticMindlin}, {"circular_mindlin", TangentialLaw::CircularMindlin}},
+                               elliptic ? TangentialLaw::EllipticMindlin : TangentialLaw::CircularMindlin);
+    if (!elliptic && spec.tangential == TangentialLaw::EllipticMindlin) {
+      r.fail(in["tangential"], where + ".tangential", "elliptic_mindlin needs normal: elliptic_hertz (allowed here: circular_mindlin)");
+    }
     spec.eccentricity = r.choice(in, "eccentricity", where,
                                  {{"tabulated", EccentricityMethod::Tabulated}, {"exact", EccentricityMethod::Exact},
                                   {"explicit", EccentricityMethod::Explicit}},
@@ -333,9 +361,25 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
       spec.minimumDuration = r.number(stop, "after", where + ".stop", 0.0);
     }
     if (const YAML::Node move = st["move_wall"]) {
-      r.allowOnly(move, where + ".move_wall", {"wall", "velocity"});
-      spec.wall = r.wallIndex(move, where + ".move_wall", scene.walls.size());
-      spec.wallVelocity = r.vector(move, "velocity", where + ".move_wall");
+      const std::string at = where + ".move_wall";
+      r.allowOnly(move, at, {"wall", "velocity", "path"});
+      spec.wall = r.wallIndex(move, at, scene.walls.size());
+      if (move["velocity"].IsDefined() == move["path"].IsDefined()) {
+        r.fail(move, at, "needs exactly one of velocity [vx, vy, vz] (m/s) or path [[t (s), offset (m)], ...]");
+      }
+      if (move["velocity"]) spec.wallVelocity = r.vector(move, "velocity", at);
+      if (const YAML::Node path = move["path"]) {
+        const std::string key = at + ".path";
+        if (!path.IsSequence() || path.size() == 0) r.fail(path, key, "must be a list of [t (s), offset along the wall normal (m)] points");
+        double last = 0.0;
+        for (const auto& point : path) {
+          if (!point.IsSequence() || point.size() != 2) r.fail(point, key, "each point is [t (s), offset (m)]");
+          const double t = r.asNumber(point[0], key), x = r.asNumber(point[1], key);
+          if (!(t > last)) r.fail(point, key, "times must be > 0 and increasing (s)");
+          last = t;
+          spec.wallPath.points.push_back({t, x});
+        }
+      }
     }
     if (const YAML::Node servo = st["servo_wall"]) {
       r.allowOnly(servo, where + ".servo_wall", {"wall", "pressure", "max_speed"});

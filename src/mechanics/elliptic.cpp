@@ -7,6 +7,7 @@
 #include <boost/math/tools/roots.hpp>
 #include <cmath>
 #include <numbers>
+#include <utility>
 #include <stdexcept>
 #include <vector>
 
@@ -18,7 +19,7 @@ double capRadius(double inverseRadius, double cap) {
 }
 
 /// Eq. 13 and the factors of Eqs. 11-12 tabulated on a uniform grid in u = ln(Ri/Rj), cubic
-/// (4-point Lagrange) interpolation of e^2, gamma and beta with the same weights.
+/// (4-point Lagrange) interpolation of e^2, gamma, beta, K and D with the same weights.
 class EccentricityTable {
  public:
   static constexpr double minRatio = 1e-8;
@@ -38,11 +39,13 @@ class EccentricityTable {
     const HertzFactors* y = &nodes_[k];
     const double l[4] = {-(s - 1) * (s - 2) * (s - 3) / 6.0, s * (s - 2) * (s - 3) / 2.0,
                          -s * (s - 1) * (s - 3) / 2.0, s * (s - 1) * (s - 2) / 6.0};
-    HertzFactors h{0.0, 0.0, 0.0};
+    HertzFactors h{0.0, 0.0, 0.0, 0.0, 0.0};
     for (int i = 0; i < 4; ++i) {
       h.e2 += l[i] * y[i].e2;
       h.gamma += l[i] * y[i].gamma;
       h.beta += l[i] * y[i].beta;
+      h.K += l[i] * y[i].K;
+      h.D += l[i] * y[i].D;
     }
     h.e2 = std::max(0.0, h.e2);
     return h;
@@ -80,6 +83,29 @@ RelativeRadii relativeRadii(const PrincipalCurvatures& A, const PrincipalCurvatu
   r.Rj = capRadius(0.5 * (sum - root), radiusCap);
   r.Rc = r.Ri * r.Rj / (r.Ri + r.Rj);
   return r;
+}
+
+Vec3 contactMajorAxis(const PrincipalCurvatures& A, const PrincipalCurvatures& B, const Vec3& normal) {
+  // Relative curvature tensor sum k_i d_i d_i^T of both surfaces in a tangent basis (t1, t2);
+  // the major axis is its eigenvector of the smaller eigenvalue.
+  const Vec3 t1 = (A.d1 - A.d1.dot(normal) * normal).normalized(), t2 = normal.cross(t1);
+  double m11 = 0.0, m12 = 0.0, m22 = 0.0;
+  for (const PrincipalCurvatures* s : {&A, &B}) {
+    for (const auto& [k, d] : {std::pair{s->k1, s->d1}, std::pair{s->k2, s->d2}}) {
+      const double x = d.dot(t1), y = d.dot(t2);
+      m11 += k * x * x;
+      m12 += k * x * y;
+      m22 += k * y * y;
+    }
+  }
+  // Eigenvector of the smaller eigenvalue s of [[m11, m12], [m12, m22]]: (m12, s - m11) or
+  // (s - m22, m12), whichever is longer (a circle: any direction).
+  const double s = 0.5 * (m11 + m22) - std::hypot(0.5 * (m11 - m22), m12);
+  const double x1 = m12, y1 = s - m11, x2 = s - m22, y2 = m12;
+  const bool first = x1 * x1 + y1 * y1 >= x2 * x2 + y2 * y2;
+  const Vec3 u = first ? Vec3(x1 * t1 + y1 * t2) : Vec3(x2 * t1 + y2 * t2);
+  const double length = u.norm();
+  return length > 0.0 ? Vec3(u / length) : t1;
 }
 
 double eccentricitySquaredExact(double ratio) {
@@ -131,6 +157,8 @@ HertzFactors hertzFactorsFromEccentricity(double e2) {
   h.e2 = e2;
   h.gamma = std::numbers::pi * std::numbers::sqrt2 * std::sqrt(E) / (2.0 * K * std::sqrt(K * t));
   h.beta = 2.0 * E / (K * std::sqrt(t));
+  h.K = K;
+  h.D = I.D;
   return h;
 }
 

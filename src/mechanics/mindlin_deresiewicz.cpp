@@ -18,10 +18,13 @@ MindlinDeresiewicz::MindlinDeresiewicz(double shearModulus, double semiMajorAxis
     throw std::invalid_argument("Mindlin-Deresiewicz: need G* > 0, a_c > 0, 0 <= e^2 < 1, mu > 0, F_n > 0");
   }
   const EllipticIntegrals I = ellipticIntegrals(e2);
-  const double along = (1.0 - poisson) * I.K + poisson * I.D, across = I.K - poisson * I.D;
-  const double c = std::cos(theta), s = std::sin(theta);
-  const double chi = 1.0 / std::sqrt(along * along * c * c + across * across * s * s);  // Eq. 57
-  phi_ = 4.0 / (pi * (2.0 - poisson) * chi);
+  const MindlinPhi axes = mindlinPhi(I.K, I.D, poisson);
+  phi_ = std::hypot(axes.major * std::cos(theta), axes.minor * std::sin(theta));
+}
+
+MindlinPhi mindlinPhi(double K, double D, double poisson) {
+  const double scale = 4.0 / (pi * (2.0 - poisson));
+  return {scale * ((1.0 - poisson) * K + poisson * D), scale * (K - poisson * D)};  // 1/chi of Eq. 57
 }
 
 double MindlinDeresiewicz::force(double displacement, MindlinDeresiewiczHistory& h) const {

@@ -93,6 +93,7 @@ World buildWorld(const Scene& scene) {
   for (const InteractionSpec& in : scene.interactions) {
     ContactModel model = world.defaultContactModel(in.materialA, in.materialB);
     model.normal = in.normal;
+    model.tangential = in.tangential;
     model.eccentricity = in.eccentricity;
     model.capFactor = in.capFactor;
     model.effectiveModulus *= in.stiffnessScale;

@@ -1,6 +1,7 @@
 #include "sqdem/world/contact_model.hpp"
 
 #include "sqdem/mechanics/haervig.hpp"
+#include "sqdem/mechanics/mindlin_deresiewicz.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -13,11 +14,12 @@ ContactForce contactForce(const ContactModel& model, const ContactGeometry& geom
   const double delta = geometry.overlap;
   const Vec3& n = geometry.normal;
   double Rc, gamma, beta;
+  HertzFactors f;
   if (model.normal == NormalLaw::EllipticHertz) {
     const double reference = motion.volumeRadiusB > 0.0 ? std::sqrt(motion.volumeRadiusA * motion.volumeRadiusB)
                                                         : motion.volumeRadiusA;
     const RelativeRadii radii = relativeRadii(geometry.curvatureA, geometry.curvatureB, model.capFactor * reference);
-    const HertzFactors f = hertzFactors(radii.ratio(), model.eccentricity);
+    f = hertzFactors(radii.ratio(), model.eccentricity);
     Rc = radii.Rc;
     gamma = f.gamma;
     beta = f.beta;
@@ -53,13 +55,29 @@ ContactForce contactForce(const ContactModel& model, const ContactGeometry& geom
   const double projected = spring.norm();
   if (projected > 0.0) spring *= length / projected;
   spring += vt * dt;
-  const double kt = 8.0 * model.effectiveShear * std::sqrt(out.area / std::numbers::pi);
-  const double etat = dampingScale * std::sqrt(motion.effectiveMass * kt);
-  Vec3 Ft = -kt * spring - etat * vt;  // on B
+  // Stiffness along the contact ellipse's major axis u and minor axis v (circle: k_u = k_v).
+  Vec3 u, v;
+  double ku, kv;
+  if (model.tangential == TangentialLaw::EllipticMindlin && model.normal == NormalLaw::EllipticHertz) {
+    u = contactMajorAxis(geometry.curvatureA, geometry.curvatureB, n);
+    const double scale = 8.0 * model.effectiveShear * contactSemiMajorAxis(out.area, f.e2);
+    const MindlinPhi phi = mindlinPhi(f.K, f.D, model.poissonRatio);
+    ku = scale / phi.major;
+    kv = scale / phi.minor;
+  } else {
+    u = n.unitOrthogonal();
+    ku = kv = 8.0 * model.effectiveShear * std::sqrt(out.area / std::numbers::pi);
+  }
+  v = n.cross(u);
+  const double etaU = dampingScale * std::sqrt(motion.effectiveMass * ku);
+  const double etaV = dampingScale * std::sqrt(motion.effectiveMass * kv);
+  const double xu = spring.dot(u), xv = spring.dot(v), vu = vt.dot(u), vv = vt.dot(v);
+  Vec3 Ft = -(ku * xu + etaU * vu) * u - (kv * xv + etaV * vv) * v;  // on B
   const double limit = model.friction * (jkr ? std::abs(Fn + 2.0 * jkr->criticalForce()) : std::max(Fn, 0.0));
   if (Ft.norm() > limit) {
+    // Slip: the spring shrinks to what carries the Coulomb force.
     Ft *= limit / Ft.norm();
-    spring = kt > 0.0 ? Vec3(-(Ft + etat * vt) / kt) : Vec3::Zero();
+    spring = ku > 0.0 && kv > 0.0 ? Vec3(-(Ft.dot(u) + etaU * vu) / ku * u - (Ft.dot(v) + etaV * vv) / kv * v) : Vec3::Zero();
   }
   out.onB += Ft;
   return out;

@@ -31,6 +31,7 @@ ContactModel World::defaultContactModel(std::uint32_t ma, std::uint32_t mb) cons
   ContactModel m;
   m.effectiveModulus = effectiveModulus(A.youngsModulus, A.poissonRatio, B.youngsModulus, B.poissonRatio);
   m.effectiveShear = effectiveShearModulus(A.youngsModulus, A.poissonRatio, B.youngsModulus, B.poissonRatio);
+  m.poissonRatio = 0.5 * (A.poissonRatio + B.poissonRatio);
   m.friction = std::min(A.friction, B.friction);
   const double e = std::min(A.restitution, B.restitution);
   m.dampingRatio = e >= 1.0 ? 0.0 : restitutionDampingRatio(e);

@@ -13,6 +13,7 @@
 #include "sqdem/mechanics/elliptic.hpp"
 #include "sqdem/world/contact_model.hpp"
 #include "sqdem/world/domain.hpp"
+#include "sqdem/world/wall_path.hpp"
 #include "sqdem/world/world.hpp"
 
 namespace sqdem {
@@ -40,6 +41,7 @@ struct ShapeFamily {
 struct InteractionSpec {
   std::uint32_t materialA = 0, materialB = 0;
   NormalLaw normal = NormalLaw::EllipticHertz;
+  TangentialLaw tangential = TangentialLaw::EllipticMindlin;
   EccentricityMethod eccentricity = EccentricityMethod::Tabulated;
   double capFactor = 10.0;
   double stiffnessScale = 1.0;  ///< reduced-stiffness factor E_mod/E (001 Eq. 24)
@@ -67,7 +69,8 @@ struct StageSpec {
   double minimumDuration = 0.0;     ///< the stop criteria are checked only after this (s)
   double viscousDamping = 0.0;      ///< background drag c (1/s), F = -c m v
   std::optional<std::size_t> wall;  ///< wall moved in this stage
-  Vec3 wallVelocity = Vec3::Zero(); ///< its velocity during the stage (m/s)
+  Vec3 wallVelocity = Vec3::Zero(); ///< its velocity during the stage (m/s), or
+  WallPath wallPath;                ///< its position along its normal (when points are given)
   std::optional<std::size_t> servoWall;  ///< wall under force control in this stage
   WallServo servo;
 };

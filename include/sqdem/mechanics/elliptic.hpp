@@ -49,14 +49,21 @@ double eccentricitySquaredExplicit(double ratio);
 double eccentricitySquaredTabulated(double ratio);
 double eccentricitySquared(double ratio, EccentricityMethod method);
 
-/// Hertz correction factors for the force (gamma, Eq. 11) and the area (beta, Eq. 12).
+/// Hertz correction factors for the force (gamma, Eq. 11) and the area (beta, Eq. 12), with the
+/// complete elliptic integrals K(e), D(e) of the tangential compliance (Eq. 57).
 struct HertzFactors {
   double e2 = 0.0;
   double gamma = 0.0;
   double beta = 0.0;
+  double K = 0.0;
+  double D = 0.0;
 };
 HertzFactors hertzFactorsFromEccentricity(double e2);
 HertzFactors hertzFactors(double ratio, EccentricityMethod method);
+
+/// Unit direction of the contact ellipse's major axis (the direction of the smaller relative
+/// curvature, 004 Eqs. 3-5) in the plane normal to `normal`, from both surfaces' curvatures.
+Vec3 contactMajorAxis(const PrincipalCurvatures& A, const PrincipalCurvatures& B, const Vec3& normal);
 
 /// 004 Eq. 1: elliptic Hertz normal force (N); effectiveModulus E* (Pa), Rc and overlap (m).
 double ellipticHertzForce(double effectiveModulus, double Rc, double overlap, double gamma);

@@ -47,6 +47,14 @@ class MindlinDeresiewicz {
   double G_, a_, phi_, limit_;
 };
 
+/// Phi along the contact ellipse's axes, from K(e), D(e) (Eq. 57 at theta = 0 and pi/2):
+/// Phi(0) = 4 [(1 - nu) K + nu D] / (pi (2 - nu)), Phi(pi/2) = 4 [K - nu D] / (pi (2 - nu));
+/// in between Phi(theta) = sqrt(Phi(0)^2 cos^2 theta + Phi(pi/2)^2 sin^2 theta). 1 for a circle.
+struct MindlinPhi {
+  double major = 1.0, minor = 1.0;
+};
+MindlinPhi mindlinPhi(double K, double D, double poisson);
+
 /// Semi-major axis of the Hertz contact ellipse, a_c = sqrt(A / (pi sqrt(1 - e^2))) for area A.
 double contactSemiMajorAxis(double area, double e2);
 

@@ -10,9 +10,15 @@
 //                             S_n = 2 E* sqrt(R_eff delta), R_eff = gamma^2 Rc (so that S_n is
 //                             dF/d(delta) of the elliptic law), zeta from the restitution e
 //   tangential                incremental spring xi kept in the tangent plane (rotated with the
-//                             contact), stiffness k_t = 8 G* a, a = sqrt(A/pi) (Mindlin's no-slip
-//                             stiffness of the area-equivalent circle, 004 Eq. 56 with Phi = 1),
-//                             damping 2 sqrt(5/6) zeta sqrt(m* k_t), Coulomb cap |F_t| <= mu F_n
+//                             contact), F_t = -K_t xi - damping, Coulomb cap |F_t| <= mu F_n.
+//     elliptic Mindlin        K_t = 8 G* a_c (u u^T / Phi(0) + v v^T / Phi(pi/2)): Mindlin's no-slip
+//                             stiffness of the contact ellipse (004 Eqs. 56-57, a_c semi-major
+//                             axis, u its direction, v the minor one); a force along theta from u
+//                             then meets the stiffness 8 G* a_c / Phi(theta) of Eq. 56 exactly
+//     circular Mindlin        K_t = 8 G* a I, a = sqrt(A/pi) (the area-equivalent circle, Phi = 1)
+//                             damping per axis 2 sqrt(5/6) zeta sqrt(m* k_axis)
+//                             (the partial-slip softening of 004 Eqs. 59-67 is not applied: the
+//                             spring is linear up to the Coulomb limit)
 //   adhesion (optional)       Haervig's simplified JKR (001 Eqs. 7-10) in place of the elastic
 //                             Hertz term, on the Hertz-equivalent sphere R* = gamma^2 Rc; the
 //                             contact acts for overlap > 0 only (the simplified model breaks at
@@ -28,13 +34,17 @@
 namespace sqdem {
 
 enum class NormalLaw { EllipticHertz, VolumeSphereHertz };
+enum class TangentialLaw { EllipticMindlin, CircularMindlin };
 
 struct ContactModel {
   NormalLaw normal = NormalLaw::EllipticHertz;
+  /// Elliptic needs the ellipse of the elliptic Hertz law; with volume spheres it is the circle.
+  TangentialLaw tangential = TangentialLaw::EllipticMindlin;
   EccentricityMethod eccentricity = EccentricityMethod::Tabulated;
   double capFactor = 10.0;         ///< relative radii capped at capFactor R_vol_ref
   double effectiveModulus = 0.0;   ///< E* (Pa)
   double effectiveShear = 0.0;     ///< G* = ((2 - nuA)/GA + (2 - nuB)/GB)^-1 (Pa)
+  double poissonRatio = 0.0;       ///< nu of Eq. 57: the mean of the two materials' (-)
   double friction = 0.0;           ///< mu (-)
   double dampingRatio = 0.0;       ///< zeta(e) (-), 0 for e = 1
   double surfaceEnergy = 0.0;      ///< gamma (J/m^2), W = 2 gamma; > 0 adds JKR adhesion
