@@ -208,6 +208,24 @@ void expectSceneError(const std::string& text, const std::string& expected) {
   }
 }
 
+// insert.solid_fraction: particles are added until their volume reaches the fraction of the
+// region (the last one may overshoot by at most its own volume).
+TEST(Engine, InsertionByTargetSolidFraction) {
+  const Scene scene = loadScene(writeScene("fraction", replaced(bedScene, "count: 60", "solid_fraction: 0.12")));
+  const World world = buildWorld(scene);
+  const InsertionSpec& in = scene.insertions[0];
+  const double region = (in.hi - in.lo).prod();
+  double volume = 0.0, largest = 0.0;
+  for (std::size_t i = 0; i < world.particles().size(); ++i) {
+    const double v = world.shapes()[world.particles().shape[i]].volume();
+    volume += v;
+    largest = std::max(largest, v);
+  }
+  EXPECT_GE(volume / region, 0.12);
+  EXPECT_LT((volume - largest) / region, 0.12);
+  EXPECT_GT(world.particles().size(), 60u);
+}
+
 TEST(Engine, SceneErrorsNameLineKeyAndWhatIsAllowed) {
   expectSceneError(replaced(bedScene, "seed: 7", "seed: 7\ncolour: red"), ":2: 'colour': unknown key (allowed: seed,");
   expectSceneError(replaced(bedScene, "restitution: 0.3", "restitution: 1.5"), ":6: 'materials.glass.restitution': must be in (0, 1]");
@@ -226,6 +244,8 @@ TEST(Engine, SceneErrorsNameLineKeyAndWhatIsAllowed) {
                    "'stages[0].move_wall.path': times must be > 0 and increasing (s)");
   expectSceneError(replaced(bedScene, "{name: settle, duration: 0.2}", "{name: settle, duration: 0.2, move_wall: {wall: 0}}"),
                    "'stages[0].move_wall': needs exactly one of velocity");
+  expectSceneError(replaced(bedScene, "count: 60", "count: 60, solid_fraction: 0.1"), "'insert[0]': needs exactly one of count");
+  expectSceneError(replaced(bedScene, "count: 60", "solid_fraction: 0.6"), "'insert[0].solid_fraction': must be in (0, 0.4]");
   expectSceneError("seed: [1", "not valid YAML");
   // A region too small for the particles is reported before anything runs.
   const Scene crowded = loadScene(writeScene("crowded", replaced(bedScene, "count: 60", "count: 5000")));

@@ -6,6 +6,7 @@
 
 #include <omp.h>
 
+#include "sqdem/mechanics/collision_time.hpp"
 #include "sqdem/mechanics/haervig.hpp"
 #include "sqdem/world/packing_measures.hpp"
 #include "sqdem/world/world.hpp"
@@ -165,6 +166,32 @@ TEST(World, ReducedStiffnessRuleKeepsAdhesiveReboundVelocity) {
     EXPECT_NEAR(soft.collisionTime / base.collisionTime, std::pow(1.0 / factor, 0.4), 1e-3 * std::pow(1.0 / factor, 0.4));
   }
   EXPECT_EQ(adhesiveImpact(0.1 * E, gamma).rebound, 0.0);  // the unmodified gamma sticks
+}
+
+// An elastic sphere-wall impact lasts Johnson's Hertz collision time (collision_time.hpp), and
+// World::hertzTimeStep is that time over the steps per collision.
+TEST(World, ElasticImpactLastsTheHertzCollisionTime) {
+  omp_set_num_threads(1);
+  const double R = 1e-3, v0 = 0.5;
+  World world({Superquadric::sphere(R)}, {Material{1e8, 0.25, 2500.0, 0.0, 1.0}}, bigBox(), 1e-4);
+  const ContactModel law = world.defaultContactModel(0, 0);
+  world.setContactModel(0, 0, law);
+  world.addWall(Wall{.plane = Plane{Vec3::Zero(), Vec3::UnitZ()}});
+  world.addParticle(0, 0, Vec3(0.0, 0.0, 1.0001 * R), Quat::Identity());
+  world.particles().velocity[0] = Vec3(0.0, 0.0, -v0);
+  const double expected = hertzCollisionTime(world.particles().mass[0], R, law.effectiveModulus, v0);
+  // hertzTimeStep: the sphere against itself, m* = m/2, R* = R/2.
+  EXPECT_NEAR(world.hertzTimeStep(v0, 50.0), hertzCollisionTime(0.5 * world.particles().mass[0], 0.5 * R, law.effectiveModulus, v0) / 50.0,
+              1e-15);
+  world.setTimeStep(expected / 2000.0);
+  double start = -1.0, duration = 0.0;
+  for (int step = 0; step < 10000 && duration == 0.0; ++step) {
+    world.step();
+    const bool touching = !world.contacts().empty();
+    if (touching && start < 0.0) start = world.time();
+    if (!touching && start >= 0.0) duration = world.time() - start;
+  }
+  EXPECT_NEAR(duration, expected, 2e-3 * expected);
 }
 
 // The slab volume of a tilted ellipsoid (packing_measures.hpp) against a grid count of the

@@ -110,6 +110,7 @@ int runScene(const std::string& scenePath, fs::path outDir, int threads, const s
   const double dt = world.timeStep();
   std::printf("sqdem run: %s: %zu particles, %zu walls, dt = %.4g s, %d thread(s), output in %s\n", scenePath.c_str(),
               world.particles().size(), world.walls().size(), dt, omp_get_max_threads(), outDir.string().c_str());
+  std::fflush(stdout);  // seen at once when stdout is a pipe or a log file
 
   VtkSeries vtk(outDir, name, scene.output.contacts);
   CsvLog log(outDir / (name + ".csv"), world.walls().size());
@@ -179,6 +180,7 @@ int runScene(const std::string& scenePath, fs::path outDir, int threads, const s
     if (scene.gravity.norm() > 0.0) std::printf(" (ratio %.3g)", kineticEnergyRatio(world, scene.gravity));
     std::printf("\n");
     if (m.betweenWallsFraction > 0.0) std::printf("  solid fraction between the walls %.4f\n", m.betweenWallsFraction);
+    std::fflush(stdout);
     writeCheckpoint(outDir / (name + "_after_" + stage.name + ".checkpoint"), stageIndex + 1, world);
   }
   const double wall = seconds(Clock::now() - start);

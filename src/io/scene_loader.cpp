@@ -185,7 +185,7 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
   const Reader r(path);
   Scene scene;
   scene.path = path;
-  r.allowOnly(root, "", {"seed", "domain", "gravity", "time_step", "time_step_fraction", "skin", "broad_phase", "reorder_every", "materials",
+  r.allowOnly(root, "", {"seed", "domain", "gravity", "time_step", "time_step_fraction", "impact_velocity", "steps_per_collision", "skin", "broad_phase", "reorder_every", "materials",
                          "shapes", "interactions", "walls", "insert", "stages", "output"});
   scene.seed = static_cast<std::uint64_t>(r.integer(root, "seed", "", 0.0, 1e18, 1.0));
 
@@ -213,6 +213,10 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
   }
   scene.timeStepFraction = r.number(root, "time_step_fraction", "", 0.2);
   if (!(scene.timeStepFraction > 0.0 && scene.timeStepFraction <= 1.0)) r.fail(root["time_step_fraction"], "time_step_fraction", "must be in (0, 1]");
+  scene.impactVelocity = r.number(root, "impact_velocity", "", 0.0);
+  if (scene.impactVelocity < 0.0) r.fail(root["impact_velocity"], "impact_velocity", "must be >= 0 (m/s)");
+  scene.stepsPerCollision = r.number(root, "steps_per_collision", "", 50.0);
+  if (!(scene.stepsPerCollision >= 10.0)) r.fail(root["steps_per_collision"], "steps_per_collision", "must be >= 10");
   scene.skin = r.number(root, "skin", "", 0.0);
   if (scene.skin < 0.0) r.fail(root["skin"], "skin", "must be >= 0 (m)");
   scene.broadPhase = r.choice(root, "broad_phase", "", {{"cell_list", BroadPhase::CellList}, {"aabb_tree", BroadPhase::AabbTree}},
@@ -317,9 +321,18 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
   for (std::size_t k = 0; k < insert.size(); ++k) {
     const std::string where = "insert[" + std::to_string(k) + "]";
     const YAML::Node in = insert[k];
-    r.allowOnly(in, where, {"count", "shape", "material", "region", "random_orientation"});
+    r.allowOnly(in, where, {"count", "solid_fraction", "shape", "material", "region", "random_orientation"});
     InsertionSpec spec;
-    spec.count = static_cast<std::size_t>(r.integer(in, "count", where, 1.0, 1e7));
+    if (in["count"].IsDefined() == in["solid_fraction"].IsDefined()) {
+      r.fail(in, where, "needs exactly one of count (particles) or solid_fraction (of the region's volume)");
+    }
+    if (in["count"]) spec.count = static_cast<std::size_t>(r.integer(in, "count", where, 1.0, 1e7));
+    if (in["solid_fraction"]) {
+      spec.solidFraction = r.number(in, "solid_fraction", where);
+      if (!(spec.solidFraction > 0.0 && spec.solidFraction <= 0.4)) {
+        r.fail(in["solid_fraction"], where + ".solid_fraction", "must be in (0, 0.4] (random sequential addition jams near 0.38)");
+      }
+    }
     if (!in["shape"]) r.fail(in, where + ".shape", "missing");
     if (!in["material"]) r.fail(in, where + ".material", "missing");
     spec.shape = r.lookup(in["shape"], where + ".shape", scene.shapes, "shape");

@@ -49,10 +49,17 @@ World buildWorld(const Scene& scene) {
     std::uniform_real_distribution<double> ux(in.lo.x(), in.hi.x()), uy(in.lo.y(), in.hi.y()), uz(in.lo.z(), in.hi.z());
     // Sample every shape first and place the largest first (random sequential addition then
     // reaches much higher loose fractions for polydisperse sets).
+    // A count, or shapes until their volume reaches solidFraction x the region's volume.
     std::vector<std::pair<Superquadric, Quat>> batch;
-    for (std::size_t n = 0; n < in.count; ++n) {
+    const double targetVolume = in.solidFraction * (in.hi - in.lo).prod();
+    double volume = 0.0;
+    while (in.solidFraction > 0.0 ? volume < targetVolume : batch.size() < in.count) {
       const Superquadric shape = sampleShape(rng, scene.shapes[in.shape]);
+      volume += shape.volume();
       batch.emplace_back(shape, in.randomOrientation ? randomRotation(rng) : Quat::Identity());
+      if (batch.size() > 10'000'000) {
+        throw SceneError(scene.path + ": insert[" + std::to_string(k) + "]: solid_fraction asks for more than 1e7 particles");
+      }
     }
     std::stable_sort(batch.begin(), batch.end(),
                      [](const auto& x, const auto& y) { return x.first.boundingRadius() > y.first.boundingRadius(); });
@@ -77,7 +84,7 @@ World buildWorld(const Scene& scene) {
       }
       if (!placed) {
         throw SceneError(scene.path + ": insert[" + std::to_string(k) + "]: placed only " + std::to_string(n) + " of " +
-                         std::to_string(in.count) + " particles without overlap; enlarge the region or lower the count");
+                         std::to_string(batch.size()) + " particles without overlap; enlarge the region or lower the count / solid_fraction");
       }
     }
   }
@@ -113,8 +120,9 @@ World buildWorld(const Scene& scene) {
     world.addParticle(static_cast<std::uint32_t>(i), materialOf[i], centres[i], orientations[i]);
   }
   // Rayleigh time scales as E^-1/2: the reduced stiffness lengthens the stable step.
-  world.setTimeStep(scene.timeStep ? *scene.timeStep
-                                   : scene.timeStepFraction * world.rayleighTimeStep() / std::sqrt(minScale));
+  double dt = scene.timeStepFraction * world.rayleighTimeStep() / std::sqrt(minScale);
+  if (scene.impactVelocity > 0.0) dt = std::min(dt, world.hertzTimeStep(scene.impactVelocity, scene.stepsPerCollision));
+  world.setTimeStep(scene.timeStep ? *scene.timeStep : dt);
   return world;
 }
 

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "sqdem/dynamics/integrator.hpp"
+#include "sqdem/mechanics/collision_time.hpp"
 #include "sqdem/mechanics/damping.hpp"
 #include "sqdem/mechanics/nan_adhesive.hpp"
 
@@ -256,6 +257,16 @@ double World::rayleighTimeStep() const {
     const double G = m.youngsModulus / (2.0 * (1.0 + m.poissonRatio));
     const Vec3 h = shapes_[particles_.shape[i]].halfExtents();
     dt = std::min(dt, sqdem::rayleighTimeStep(h.minCoeff(), m.density, G, m.poissonRatio));
+  }
+  return dt;
+}
+
+double World::hertzTimeStep(double speed, double stepsPerCollision) const {
+  double dt = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < particles_.size(); ++i) {
+    const double R = shapes_[particles_.shape[i]].volumeEquivalentRadius(), m = particles_.mass[i];
+    const double Estar = model(particles_.material[i], particles_.material[i]).effectiveModulus;
+    dt = std::min(dt, hertzCollisionTime(0.5 * m, 0.5 * R, Estar, speed) / stepsPerCollision);
   }
   return dt;
 }

@@ -54,7 +54,8 @@ struct WallSpec {
 };
 
 struct InsertionSpec {
-  std::size_t count = 0;
+  std::size_t count = 0;         ///< number of particles, or
+  double solidFraction = 0.0;    ///< (> 0) insert until the particle volume is this x the region's
   std::uint32_t shape = 0, material = 0;
   Vec3 lo = Vec3::Zero(), hi = Vec3::Zero();  ///< region for the centres (m)
   bool randomOrientation = true;
@@ -88,6 +89,8 @@ struct Scene {
   Vec3 gravity = Vec3::Zero();
   std::optional<double> timeStep;  ///< explicit (s); otherwise timeStepFraction x Rayleigh time
   double timeStepFraction = 0.2;
+  double impactVelocity = 0.0;     ///< (m/s) > 0: auto also resolves a Hertz impact at this speed
+  double stepsPerCollision = 50.0; ///< ... with this many steps
   double skin = 0.0;               ///< Verlet skin (m); 0: 0.2 x smallest volume radius
   BroadPhase broadPhase = BroadPhase::CellList;  ///< how candidate pairs are found
   int reorderEvery = 20;           ///< Hilbert re-ordering every N neighbour-list builds (0: off)

@@ -144,6 +144,10 @@ class World {
   /// Rayleigh time (000 Eq. 71) of the particle with the smallest semi-axis (s); scenes use a
   /// fraction of it.
   double rayleighTimeStep() const;
+  /// Hertz collision time (collision_time.hpp) of the smallest particle against itself at
+  /// impact speed v (m/s), on volume-equivalent spheres with the pair's (possibly reduced) E*,
+  /// divided by stepsPerCollision (s).
+  double hertzTimeStep(double speed, double stepsPerCollision) const;
 
  private:
   const ContactModel& model(std::uint32_t ma, std::uint32_t mb) const { return models_[ma * materials_.size() + mb]; }
