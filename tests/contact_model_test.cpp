@@ -39,8 +39,8 @@ ContactGeometry ellipsoidTipOnWall(double psi) {
 
 /// Force on B for a spring xi (m) at rest.
 Vec3 tangentialForce(const ContactModel& m, const ContactGeometry& g, const Vec3& xi) {
-  Vec3 spring = xi;
-  const ContactForce f = contactForce(m, g, {.effectiveMass = 1e-6, .volumeRadiusA = 1.44e-3}, spring, 1e-7);
+  ContactHistory history{.spring = xi};
+  const ContactForce f = contactForce(m, g, {.effectiveMass = 1e-6, .volumeRadiusA = 1.44e-3}, history, 1e-7);
   return f.onB - f.normal * g.normal;
 }
 
@@ -83,12 +83,12 @@ TEST(ContactModel, CircularSpringIsEightGStarA) {
 TEST(ContactModel, CoulombLimitCapsTheSpring) {
   const ContactGeometry g = ellipsoidTipOnWall(0.3);
   const ContactModel m = model(NormalLaw::EllipticHertz, TangentialLaw::EllipticMindlin, 0.4);
-  Vec3 spring(1e-5, 2e-5, 0.0);  // far beyond sliding
-  const ContactForce f = contactForce(m, g, {.effectiveMass = 1e-6, .volumeRadiusA = 1.44e-3}, spring, 1e-7);
+  ContactHistory history{.spring = Vec3(1e-5, 2e-5, 0.0)};  // far beyond sliding
+  const ContactForce f = contactForce(m, g, {.effectiveMass = 1e-6, .volumeRadiusA = 1.44e-3}, history, 1e-7);
   const Vec3 Ft = f.onB - f.normal * g.normal;
   EXPECT_NEAR(Ft.norm(), 0.4 * f.normal, 1e-12 * f.normal);
   // The spring was shrunk to what carries the limit force: re-applying it gives the same force.
-  EXPECT_LT((tangentialForce(m, g, spring) - Ft).norm(), 1e-9 * Ft.norm());
+  EXPECT_LT((tangentialForce(m, g, history.spring) - Ft).norm(), 1e-9 * Ft.norm());
 }
 
 }  // namespace

@@ -226,6 +226,23 @@ TEST(Engine, InsertionByTargetSolidFraction) {
   EXPECT_GT(world.particles().size(), 60u);
 }
 
+// A bed with Becker-Kamlah contacts (002, NMC fits with the transition, elliptic Mindlin
+// tangential) settles like the elastic one; a low yield strength makes contacts plastic, so the
+// bed ends with permanent (plastic) overlaps that an elastic bed does not have: after the pour,
+// some touching contact carries no force (unloaded below its residual overlap) or is unloading.
+TEST(Engine, BeckerKamlahBedSettles) {
+  const std::string scene = replaced(replaced(bedScene, "restitution: 0.3}", "restitution: 0.3, yield_strength: 2.0e4}"),
+                                     "  - materials: [glass, glass]\n", "  - materials: [glass, glass]\n    normal: becker_kamlah\n");
+  omp_set_num_threads(2);
+  const World world = pouredBed(loadScene(writeScene("plastic", scene)), 50.0, 40000);
+  EXPECT_EQ(world.statistics().detectorFailures, 0);
+  ASSERT_GT(world.contacts().size(), 40u);
+  std::size_t plastic = 0;
+  for (const Contact& c : world.contacts()) plastic += c.history.maxOverlap > c.geometry.overlap;
+  EXPECT_GT(plastic, 0u);  // contacts remember a larger overlap than the current one
+  for (std::size_t i = 0; i < world.particles().size(); ++i) ASSERT_TRUE(world.particles().position[i].allFinite());
+}
+
 TEST(Engine, SceneErrorsNameLineKeyAndWhatIsAllowed) {
   expectSceneError(replaced(bedScene, "seed: 7", "seed: 7\ncolour: red"), ":2: 'colour': unknown key (allowed: seed,");
   expectSceneError(replaced(bedScene, "restitution: 0.3", "restitution: 1.5"), ":6: 'materials.glass.restitution': must be in (0, 1]");
@@ -236,7 +253,7 @@ TEST(Engine, SceneErrorsNameLineKeyAndWhatIsAllowed) {
   expectSceneError(replaced(bedScene, "periodic: [x, y]", "periodic: [x, w]"), "'domain.periodic': directions are x, y, z");
   expectSceneError(replaced(bedScene, "{name: settle, duration: 0.2}", "{name: settle}"), "'stages[0].duration': missing");
   expectSceneError(replaced(bedScene, "  - materials: [glass, glass]\n", "  - materials: [glass, glass]\n    normal: volume_sphere_hertz\n    tangential: elliptic_mindlin\n"),
-                   "'interactions[0].tangential': elliptic_mindlin needs normal: elliptic_hertz (allowed here: circular_mindlin)");
+                   "'interactions[0].tangential': elliptic_mindlin needs an elliptic normal law (allowed here: circular_mindlin)");
   expectSceneError(replaced(bedScene, "seed: 7", "seed: 7\nbroad_phase: octree"), "'broad_phase': allowed: cell_list, aabb_tree");
   expectSceneError(replaced(bedScene, "grains: {volume_radius", "grains: {file: no_such_shape.yaml}\n  unused: {volume_radius"),
                    "'shapes.grains.file': cannot open");
@@ -246,6 +263,10 @@ TEST(Engine, SceneErrorsNameLineKeyAndWhatIsAllowed) {
                    "'stages[0].move_wall': needs exactly one of velocity");
   expectSceneError(replaced(bedScene, "count: 60", "count: 60, solid_fraction: 0.1"), "'insert[0]': needs exactly one of count");
   expectSceneError(replaced(bedScene, "count: 60", "solid_fraction: 0.6"), "'insert[0].solid_fraction': must be in (0, 0.4]");
+  expectSceneError(replaced(bedScene, "  - materials: [glass, glass]\n", "  - materials: [glass, glass]\n    normal: becker_kamlah\n"),
+                   "'interactions[0].normal': becker_kamlah needs yield_strength (Pa) in material 'glass'");
+  expectSceneError(replaced(bedScene, "  - materials: [glass, glass]\n", "  - materials: [glass, glass]\n    lambda_max: 2.5\n"),
+                   "plastic_transition, lambda_max and epsilon_max belong to normal: becker_kamlah");
   expectSceneError("seed: [1", "not valid YAML");
   // A region too small for the particles is reported before anything runs.
   const Scene crowded = loadScene(writeScene("crowded", replaced(bedScene, "count: 60", "count: 5000")));

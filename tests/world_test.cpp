@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 #include <omp.h>
 
@@ -192,6 +193,50 @@ TEST(World, ElasticImpactLastsTheHertzCollisionTime) {
     if (!touching && start >= 0.0) duration = world.time() - start;
   }
   EXPECT_NEAR(duration, expected, 2e-3 * expected);
+}
+
+// Becker-Kamlah in the engine: for a sphere the elastic - fully plastic variant (002 Eq. 24,
+// unloading Eqs. 32-49 with beta = 1) is Thornton's elastic-perfectly-plastic law (p_Y = 1.6 Y,
+// his R_p equals 002 Eq. 44), whose restitution against a rigid flat is (Thornton, J. Appl. Mech.
+// 64 (1997) 383, Eq. 42, with v = V_y/V):
+//   e = sqrt(6 sqrt3 / 5) sqrt(1 - v^2/6) [v / (v + 2 sqrt(6/5 - v^2/5))]^1/4,
+// V_y from the Hertz energy at the yield overlap. No viscous damping (restitution 1): all loss
+// is plastic; below V_y the impact stays elastic.
+TEST(World, BeckerKamlahSphereImpactFollowsThorntonRestitution) {
+  omp_set_num_threads(1);
+  const double R = 1e-4, E = 1e9, nu = 0.3, Y = 2e7, rho = 2000.0;
+  const auto rebound = [&](double speed) {
+    World world({Superquadric::sphere(R)}, {Material{E, nu, rho, 0.0, 1.0, Y}}, bigBox(), 1e-5);
+    ContactModel law = world.defaultContactModel(0, 0);
+    law.normal = NormalLaw::BeckerKamlah;
+    law.plasticTransition = false;
+    world.setContactModel(0, 0, law);
+    world.addWall(Wall{.plane = Plane{Vec3::Zero(), Vec3::UnitZ()}});
+    world.addParticle(0, 0, Vec3(0.0, 0.0, 1.00001 * R), Quat::Identity());
+    world.particles().velocity[0] = Vec3(0.0, 0.0, -speed);
+    world.setTimeStep(hertzCollisionTime(world.particles().mass[0], R, law.effectiveModulus, speed) / 4000.0);
+    bool touched = false;
+    for (int step = 0; step < 100000 && !(touched && world.contacts().empty()); ++step) {
+      world.step();
+      touched = touched || !world.contacts().empty();
+    }
+    EXPECT_TRUE(touched && world.contacts().empty());
+    return world.particles().velocity[0].z() / speed;
+  };
+  // Yield overlap and speed of a sphere on a flat: p0 = p_Y at delta_Y = (pi p_Y / (2 E*))^2 R.
+  const double Estar = effectiveModulus(E, nu, E, nu), pY = 1.6 * Y;
+  const double deltaY = std::pow(std::numbers::pi * pY / (2.0 * Estar), 2) * R;
+  const double mass = rho * 4.0 / 3.0 * std::numbers::pi * R * R * R;
+  const double Vy = std::sqrt(2.0 * 8.0 / 15.0 * Estar * std::sqrt(R) * std::pow(deltaY, 2.5) / mass);
+  EXPECT_NEAR(rebound(0.5 * Vy), 1.0, 1e-4);
+  for (const double ratio : {3.0, 10.0, 30.0}) {
+    const double v = 1.0 / ratio;
+    const double thornton = std::sqrt(6.0 * std::sqrt(3.0) / 5.0) * std::sqrt(1.0 - v * v / 6.0) *
+                            std::pow(v / (v + 2.0 * std::sqrt(6.0 / 5.0 - v * v / 5.0)), 0.25);
+    const double e = rebound(ratio * Vy);
+    std::printf("V/V_y = %4.0f: rebound %.5f, Thornton %.5f\n", ratio, e, thornton);
+    EXPECT_NEAR(e, thornton, 1e-3 * thornton);
+  }
 }
 
 // The slab volume of a tilted ellipsoid (packing_measures.hpp) against a grid count of the

@@ -141,7 +141,7 @@ class Reader {
 };
 
 Material readMaterial(const Reader& r, const YAML::Node& m, const std::string& where) {
-  r.allowOnly(m, where, {"youngs_modulus", "poisson_ratio", "density", "friction", "restitution"});
+  r.allowOnly(m, where, {"youngs_modulus", "poisson_ratio", "density", "friction", "restitution", "yield_strength"});
   Material out;
   out.youngsModulus = r.positive(m, "youngs_modulus", where, "Pa");
   out.poissonRatio = r.number(m, "poisson_ratio", where);
@@ -151,6 +151,8 @@ Material readMaterial(const Reader& r, const YAML::Node& m, const std::string& w
   if (out.friction < 0.0) r.fail(m["friction"], where + ".friction", "must be >= 0");
   out.restitution = r.number(m, "restitution", where, 1.0);
   if (!(out.restitution > 0.0 && out.restitution <= 1.0)) r.fail(m["restitution"], where + ".restitution", "must be in (0, 1]");
+  out.yieldStrength = r.number(m, "yield_strength", where, 0.0);
+  if (out.yieldStrength < 0.0) r.fail(m["yield_strength"], where + ".yield_strength", "must be > 0 (Pa)");
   return out;
 }
 
@@ -260,7 +262,8 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
   for (std::size_t k = 0; k < interactions.size(); ++k) {
     const YAML::Node in = interactions[k];
     const std::string where = "interactions[" + std::to_string(k) + "]";
-    r.allowOnly(in, where, {"materials", "normal", "tangential", "eccentricity", "cap_factor", "reduced_stiffness", "surface_energy"});
+    r.allowOnly(in, where, {"materials", "normal", "tangential", "eccentricity", "cap_factor", "reduced_stiffness", "surface_energy",
+                            "plastic_transition", "lambda_max", "epsilon_max"});
     const YAML::Node pair = in["materials"];
     if (!pair || !pair.IsSequence() || pair.size() != 2) r.fail(pair ? pair : in, where + ".materials", "must be a pair [material, material]");
     InteractionSpec spec;
@@ -269,15 +272,16 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
     if (declared[spec.materialA * nm + spec.materialB]) r.fail(pair, where + ".materials", "this pair is declared twice");
     declared[spec.materialA * nm + spec.materialB] = declared[spec.materialB * nm + spec.materialA] = true;
     spec.normal = r.choice(in, "normal", where,
-                           {{"elliptic_hertz", NormalLaw::EllipticHertz}, {"volume_sphere_hertz", NormalLaw::VolumeSphereHertz}},
+                           {{"elliptic_hertz", NormalLaw::EllipticHertz}, {"volume_sphere_hertz", NormalLaw::VolumeSphereHertz},
+                            {"becker_kamlah", NormalLaw::BeckerKamlah}},
                            NormalLaw::EllipticHertz);
     // The elliptic tangential law needs the contact ellipse, which only the elliptic normal law has.
-    const bool elliptic = spec.normal == NormalLaw::EllipticHertz;
+    const bool elliptic = spec.normal != NormalLaw::VolumeSphereHertz;
     spec.tangential = r.choice(in, "tangential", where,
                                {{"elliptic_mindlin", TangentialLaw::EllipticMindlin}, {"circular_mindlin", TangentialLaw::CircularMindlin}},
                                elliptic ? TangentialLaw::EllipticMindlin : TangentialLaw::CircularMindlin);
     if (!elliptic && spec.tangential == TangentialLaw::EllipticMindlin) {
-      r.fail(in["tangential"], where + ".tangential", "elliptic_mindlin needs normal: elliptic_hertz (allowed here: circular_mindlin)");
+      r.fail(in["tangential"], where + ".tangential", "elliptic_mindlin needs an elliptic normal law (allowed here: circular_mindlin)");
     }
     spec.eccentricity = r.choice(in, "eccentricity", where,
                                  {{"tabulated", EccentricityMethod::Tabulated}, {"exact", EccentricityMethod::Exact},
@@ -289,6 +293,28 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
     if (!(spec.stiffnessScale > 0.0 && spec.stiffnessScale <= 1.0)) r.fail(in["reduced_stiffness"], where + ".reduced_stiffness", "must be in (0, 1] (E_mod / E)");
     spec.surfaceEnergy = r.number(in, "surface_energy", where, 0.0);
     if (spec.surfaceEnergy < 0.0) r.fail(in["surface_energy"], where + ".surface_energy", "must be >= 0 (J/m^2)");
+    if (spec.normal == NormalLaw::BeckerKamlah) {
+      for (const std::uint32_t m : {spec.materialA, spec.materialB}) {
+        if (!(scene.materials[m].material.yieldStrength > 0.0)) {
+          r.fail(pair, where + ".normal", "becker_kamlah needs yield_strength (Pa) in material '" + scene.materials[m].name + "'");
+        }
+      }
+      if (spec.stiffnessScale != 1.0 || spec.surfaceEnergy > 0.0) {
+        r.fail(in, where, "becker_kamlah takes neither reduced_stiffness (no published rule for plastic contacts) nor surface_energy");
+      }
+      spec.plasticTransition = r.flag(in, "plastic_transition", where, true);
+      if (in["lambda_max"].IsDefined() != in["epsilon_max"].IsDefined()) {
+        r.fail(in, where, "give both lambda_max and epsilon_max, or neither (NMC fits, 002 Eq. 54)");
+      }
+      if (in["lambda_max"]) {
+        spec.lambdaMax = r.number(in, "lambda_max", where);
+        spec.epsilonMax = r.number(in, "epsilon_max", where);
+        if (!(spec.lambdaMax >= 1.6)) r.fail(in["lambda_max"], where + ".lambda_max", "must be >= 1.6");
+        if (!(spec.epsilonMax > 1.0)) r.fail(in["epsilon_max"], where + ".epsilon_max", "must be > 1");
+      }
+    } else if (in["plastic_transition"] || in["lambda_max"] || in["epsilon_max"]) {
+      r.fail(in, where, "plastic_transition, lambda_max and epsilon_max belong to normal: becker_kamlah");
+    }
     scene.interactions.push_back(spec);
   }
   for (std::size_t a = 0; a < nm; ++a) {

@@ -101,6 +101,9 @@ World buildWorld(const Scene& scene) {
     ContactModel model = world.defaultContactModel(in.materialA, in.materialB);
     model.normal = in.normal;
     model.tangential = in.tangential;
+    model.plasticTransition = in.plasticTransition;
+    model.lambdaMax = in.lambdaMax;
+    model.epsilonMax = in.epsilonMax;
     model.eccentricity = in.eccentricity;
     model.capFactor = in.capFactor;
     model.effectiveModulus *= in.stiffnessScale;

@@ -1,5 +1,6 @@
 #include "sqdem/world/contact_model.hpp"
 
+#include "sqdem/mechanics/becker_kamlah.hpp"
 #include "sqdem/mechanics/haervig.hpp"
 #include "sqdem/mechanics/mindlin_deresiewicz.hpp"
 
@@ -10,15 +11,16 @@
 namespace sqdem {
 
 ContactForce contactForce(const ContactModel& model, const ContactGeometry& geometry,
-                          const ContactKinematics& motion, Vec3& spring, double dt) {
+                          const ContactKinematics& motion, ContactHistory& history, double dt) {
   const double delta = geometry.overlap;
   const Vec3& n = geometry.normal;
   double Rc, gamma, beta;
   HertzFactors f;
-  if (model.normal == NormalLaw::EllipticHertz) {
+  RelativeRadii radii;
+  if (model.usesCurvatures()) {
     const double reference = motion.volumeRadiusB > 0.0 ? std::sqrt(motion.volumeRadiusA * motion.volumeRadiusB)
                                                         : motion.volumeRadiusA;
-    const RelativeRadii radii = relativeRadii(geometry.curvatureA, geometry.curvatureB, model.capFactor * reference);
+    radii = relativeRadii(geometry.curvatureA, geometry.curvatureB, model.capFactor * reference);
     f = hertzFactors(radii.ratio(), model.eccentricity);
     Rc = radii.Rc;
     gamma = f.gamma;
@@ -35,8 +37,26 @@ ContactForce contactForce(const ContactModel& model, const ContactGeometry& geom
   // Adhesion: Haervig's simplified JKR on the Hertz-equivalent sphere R* = gamma^2 Rc.
   std::optional<HaervigJkr> jkr;
   if (model.surfaceEnergy > 0.0) jkr.emplace(model.effectiveModulus, model.surfaceEnergy, gamma * gamma * Rc);
-  const double elastic = jkr ? jkr->normalForce(delta)
-                             : 4.0 / 3.0 * model.effectiveModulus * std::sqrt(Rc) * gamma * delta * sqrtDelta;
+  double elastic, area = std::numbers::pi * Rc * beta * delta;
+  if (model.normal == NormalLaw::BeckerKamlah) {
+    BeckerKamlahParameters p{.effectiveModulus = model.effectiveModulus, .yieldStrength = model.yieldStrength,
+                             .lambdaMax = model.lambdaMax, .epsilonMax = model.epsilonMax,
+                             .transition = model.plasticTransition};
+    const BeckerFactors geometryFactors = beckerFactors(radii);
+    if (p.transition && p.lambdaMax == 0.0) {
+      const double rIJ = motion.volumeRadiusA + (motion.volumeRadiusB > 0.0 ? motion.volumeRadiusB : motion.volumeRadiusA);
+      const BeckerKamlahFits fits = nmcBeckerKamlahFits(geometryFactors.Re, rIJ);
+      p.lambdaMax = fits.lambdaMax;
+      p.epsilonMax = fits.epsilonMax;
+    }
+    BeckerKamlahHistory plastic{history.maxOverlap};
+    const BeckerKamlahState state = BeckerKamlah(geometryFactors, p).evaluate(delta, plastic);
+    history.maxOverlap = plastic.maxOverlap;
+    elastic = state.force;
+    area = std::numbers::pi * state.contactRadius * state.contactRadius;
+  } else {
+    elastic = jkr ? jkr->normalForce(delta) : 4.0 / 3.0 * model.effectiveModulus * std::sqrt(Rc) * gamma * delta * sqrtDelta;
+  }
   const double Sn = 2.0 * model.effectiveModulus * gamma * std::sqrt(Rc) * sqrtDelta;  // dF/d(delta)
   const double dampingScale = 2.0 * std::sqrt(5.0 / 6.0) * model.dampingRatio;
   const double normalRate = -motion.relativeVelocity.dot(n);  // > 0 approaching
@@ -44,12 +64,13 @@ ContactForce contactForce(const ContactModel& model, const ContactGeometry& geom
 
   ContactForce out;
   out.normal = Fn;
-  out.area = std::numbers::pi * Rc * beta * delta;
+  out.area = area;
   out.onB = Fn * n;
   if (model.friction <= 0.0) return out;
 
   // Tangential spring: keep it in the current tangent plane with its length, then add v_t dt.
   const Vec3 vt = motion.relativeVelocity - motion.relativeVelocity.dot(n) * n;
+  Vec3& spring = history.spring;
   const double length = spring.norm();
   spring -= spring.dot(n) * n;
   const double projected = spring.norm();
@@ -58,7 +79,7 @@ ContactForce contactForce(const ContactModel& model, const ContactGeometry& geom
   // Stiffness along the contact ellipse's major axis u and minor axis v (circle: k_u = k_v).
   Vec3 u, v;
   double ku, kv;
-  if (model.tangential == TangentialLaw::EllipticMindlin && model.normal == NormalLaw::EllipticHertz) {
+  if (model.tangential == TangentialLaw::EllipticMindlin && model.usesCurvatures()) {
     u = contactMajorAxis(geometry.curvatureA, geometry.curvatureB, n);
     const double scale = 8.0 * model.effectiveShear * contactSemiMajorAxis(out.area, f.e2);
     const MindlinPhi phi = mindlinPhi(f.K, f.D, model.poissonRatio);

@@ -34,6 +34,7 @@ ContactModel World::defaultContactModel(std::uint32_t ma, std::uint32_t mb) cons
   m.effectiveShear = effectiveShearModulus(A.youngsModulus, A.poissonRatio, B.youngsModulus, B.poissonRatio);
   m.poissonRatio = 0.5 * (A.poissonRatio + B.poissonRatio);
   m.friction = std::min(A.friction, B.friction);
+  m.yieldStrength = std::min(A.yieldStrength, B.yieldStrength);
   const double e = std::min(A.restitution, B.restitution);
   m.dampingRatio = e >= 1.0 ? 0.0 : restitutionDampingRatio(e);
   return m;
@@ -57,8 +58,8 @@ void World::detect(Contact& c) const {
   const ParticleStore& p = particles_;
   const Superquadric& A = shapes_[p.shape[c.a]];
   const Pose poseA{p.position[c.a], p.orientation[c.a]};
-  const bool curvatures = model(p.material[c.a], c.onWall() ? walls_[c.b & ~wallFlag].material : p.material[c.b]).normal ==
-                          NormalLaw::EllipticHertz;  // a law that does not use them does not pay for them
+  // A law that does not use the curvatures does not pay for them.
+  const bool curvatures = model(p.material[c.a], c.onWall() ? walls_[c.b & ~wallFlag].material : p.material[c.b]).usesCurvatures();
   if (c.onWall()) {
     c.geometry = detectContact(A, poseA, walls_[c.b & ~wallFlag].plane, {.curvatures = curvatures});
     return;
@@ -85,7 +86,7 @@ void World::detect(Contact& c) const {
 void World::applyLaw(Contact& c) const {
   if (!c.geometry.touching()) {
     c.force = {};
-    c.spring.setZero();
+    c.history = {};  // separated: the history ends
     return;
   }
   const ParticleStore& p = particles_;
@@ -106,7 +107,7 @@ void World::applyLaw(Contact& c) const {
     motion.effectiveMass = p.mass[c.a] * p.mass[c.b] / (p.mass[c.a] + p.mass[c.b]);
     law = &model(p.material[c.a], p.material[c.b]);
   }
-  c.force = contactForce(*law, c.geometry, motion, c.spring, dt_);
+  c.force = contactForce(*law, c.geometry, motion, c.history, dt_);
 }
 
 void World::computeForces() {
@@ -150,7 +151,7 @@ void World::computeForces() {
     while (previous != pairs_.end() && previous->key() < c.key()) ++previous;
     if (previous != pairs_.end() && previous->key() == c.key()) {
       c.geometry = previous->geometry;
-      c.spring = previous->spring;
+      c.history = previous->history;
       c.separation = previous->separation;
     }
   }

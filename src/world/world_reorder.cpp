@@ -30,7 +30,7 @@ void exchangeBodies(Contact& c) {
   g.normal = -g.normal;
   std::swap(g.curvatureA, g.curvatureB);
   std::swap(g.localPointA, g.localPointB);
-  c.spring = -c.spring;
+  c.history.spring = -c.history.spring;
   c.force.onB = -c.force.onB;
 }
 

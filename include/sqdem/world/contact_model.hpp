@@ -19,6 +19,15 @@
 //                             damping per axis 2 sqrt(5/6) zeta sqrt(m* k_axis)
 //                             (the partial-slip softening of 004 Eqs. 59-67 is not applied: the
 //                             spring is linear up to the Coulomb limit)
+//   normal, Becker-Kamlah     002's elasto-plastic law for ellipsoids (becker_kamlah.hpp) on the
+//                             detector's curvatures: elastic (Eq. 10), elastic-plastic with the
+//                             lambda(c) transition or elastic-fully-plastic, elastic unloading/
+//                             reloading from the largest overlap reached (history, Eqs. 32-49);
+//                             area pi c^2; lambda_max, eps_max explicit or from the NMC fits
+//                             (Eq. 54, r_IJ = sum of the volume-equivalent radii; for a wall
+//                             r_IJ = 2 r_I, the particle and its mirror image: an assumption,
+//                             002 treats particle pairs only). Damping as above with the elliptic
+//                             Hertz stiffness; the history is dropped when the pair separates.
 //   adhesion (optional)       Haervig's simplified JKR (001 Eqs. 7-10) in place of the elastic
 //                             Hertz term, on the Hertz-equivalent sphere R* = gamma^2 Rc; the
 //                             contact acts for overlap > 0 only (the simplified model breaks at
@@ -33,7 +42,7 @@
 
 namespace sqdem {
 
-enum class NormalLaw { EllipticHertz, VolumeSphereHertz };
+enum class NormalLaw { EllipticHertz, VolumeSphereHertz, BeckerKamlah };
 enum class TangentialLaw { EllipticMindlin, CircularMindlin };
 
 struct ContactModel {
@@ -48,6 +57,20 @@ struct ContactModel {
   double friction = 0.0;           ///< mu (-)
   double dampingRatio = 0.0;       ///< zeta(e) (-), 0 for e = 1
   double surfaceEnergy = 0.0;      ///< gamma (J/m^2), W = 2 gamma; > 0 adds JKR adhesion
+  // Becker-Kamlah only:
+  double yieldStrength = 0.0;      ///< Y (Pa), yield strength in simple tension
+  bool plasticTransition = true;   ///< false: elastic - fully plastic (002 Eq. 24)
+  double lambdaMax = 0.0;          ///< l_max (-); 0: NMC fit (002 Eq. 54)
+  double epsilonMax = 0.0;         ///< e_max (-); 0: NMC fit (002 Eq. 54)
+
+  /// True for laws whose elliptic contact needs the detector's curvatures.
+  bool usesCurvatures() const { return normal != NormalLaw::VolumeSphereHertz; }
+};
+
+/// What a contact remembers between steps (kept while it touches, dropped at separation).
+struct ContactHistory {
+  Vec3 spring = Vec3::Zero();  ///< tangential spring (m)
+  double maxOverlap = 0.0;     ///< largest overlap reached (m): the plastic state of Becker-Kamlah
 };
 
 /// What the law needs besides the geometry.
@@ -64,8 +87,8 @@ struct ContactForce {
   double area = 0.0;        ///< contact area (m^2)
 };
 
-/// Force of a touching contact; `spring` is the tangential history (m), updated; step dt (s).
+/// Force of a touching contact; its history is updated; step dt (s).
 ContactForce contactForce(const ContactModel& model, const ContactGeometry& geometry,
-                          const ContactKinematics& motion, Vec3& spring, double dt);
+                          const ContactKinematics& motion, ContactHistory& history, double dt);
 
 }  // namespace sqdem

@@ -28,6 +28,7 @@ struct Material {
   double density = 0.0;        ///< rho (kg/m^3)
   double friction = 0.0;       ///< mu (-), pair value = min of the two
   double restitution = 1.0;    ///< e (-), pair value = min of the two
+  double yieldStrength = 0.0;  ///< Y (Pa) in simple tension, for plastic laws; pair value = min of the two
 };
 
 /// Force control of a wall: before each step the wall moves along its normal with
@@ -55,7 +56,7 @@ struct Contact {
   std::uint32_t a = 0, b = 0;
   Vec3 shift = Vec3::Zero();    ///< periodic image offset of b (m)
   ContactGeometry geometry;     ///< last solution: warm start for the next step
-  Vec3 spring = Vec3::Zero();   ///< tangential spring (m)
+  ContactHistory history;       ///< tangential spring, plastic state
   ContactForce force;           ///< force on b from the last step
   /// When the last solve found the pair Separated: a lower bound of its gap (m), reduced every
   /// step by a bound of the motion since; the pair is not solved again while it stays > 0.
