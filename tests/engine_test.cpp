@@ -244,15 +244,18 @@ TEST(Engine, BeckerKamlahBedSettles) {
 }
 
 TEST(Engine, SceneErrorsNameLineKeyAndWhatIsAllowed) {
+  const auto withInteraction = [](const std::string& keys) {
+    return replaced(bedScene, "  - materials: [glass, glass]\n", "  - materials: [glass, glass]\n" + keys);
+  };
   expectSceneError(replaced(bedScene, "seed: 7", "seed: 7\ncolour: red"), ":2: 'colour': unknown key (allowed: seed,");
   expectSceneError(replaced(bedScene, "restitution: 0.3", "restitution: 1.5"), ":6: 'materials.glass.restitution': must be in (0, 1]");
   expectSceneError(replaced(bedScene, "density: 2500", "density: heavy"), "'materials.glass.density': must be a finite number");
   expectSceneError(replaced(bedScene, "shape: grains", "shape: pebbles"), "unknown shape 'pebbles' (defined: grains)");
-  expectSceneError(replaced(bedScene, "  - materials: [glass, glass]\n", "  - materials: [glass, glass]\n    normal: dmt\n"),
+  expectSceneError(withInteraction("    normal: dmt\n"),
                    "'interactions[0].normal': allowed: elliptic_hertz, volume_sphere_hertz");
   expectSceneError(replaced(bedScene, "periodic: [x, y]", "periodic: [x, w]"), "'domain.periodic': directions are x, y, z");
   expectSceneError(replaced(bedScene, "{name: settle, duration: 0.2}", "{name: settle}"), "'stages[0].duration': missing");
-  expectSceneError(replaced(bedScene, "  - materials: [glass, glass]\n", "  - materials: [glass, glass]\n    normal: volume_sphere_hertz\n    tangential: elliptic_mindlin\n"),
+  expectSceneError(withInteraction("    normal: volume_sphere_hertz\n    tangential: elliptic_mindlin\n"),
                    "'interactions[0].tangential': elliptic_mindlin needs an elliptic normal law (allowed here: circular_mindlin)");
   expectSceneError(replaced(bedScene, "seed: 7", "seed: 7\nbroad_phase: octree"), "'broad_phase': allowed: cell_list, aabb_tree");
   expectSceneError(replaced(bedScene, "grains: {volume_radius", "grains: {file: no_such_shape.yaml}\n  unused: {volume_radius"),
@@ -263,9 +266,9 @@ TEST(Engine, SceneErrorsNameLineKeyAndWhatIsAllowed) {
                    "'stages[0].move_wall': needs exactly one of velocity");
   expectSceneError(replaced(bedScene, "count: 60", "count: 60, solid_fraction: 0.1"), "'insert[0]': needs exactly one of count");
   expectSceneError(replaced(bedScene, "count: 60", "solid_fraction: 0.6"), "'insert[0].solid_fraction': must be in (0, 0.4]");
-  expectSceneError(replaced(bedScene, "  - materials: [glass, glass]\n", "  - materials: [glass, glass]\n    normal: becker_kamlah\n"),
+  expectSceneError(withInteraction("    normal: becker_kamlah\n"),
                    "'interactions[0].normal': becker_kamlah needs yield_strength (Pa) in material 'glass'");
-  expectSceneError(replaced(bedScene, "  - materials: [glass, glass]\n", "  - materials: [glass, glass]\n    lambda_max: 2.5\n"),
+  expectSceneError(withInteraction("    lambda_max: 2.5\n"),
                    "plastic_transition, lambda_max and epsilon_max belong to normal: becker_kamlah");
   expectSceneError("seed: [1", "not valid YAML");
   // A region too small for the particles is reported before anything runs.
