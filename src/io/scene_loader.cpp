@@ -263,7 +263,7 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
     const YAML::Node in = interactions[k];
     const std::string where = "interactions[" + std::to_string(k) + "]";
     r.allowOnly(in, where, {"materials", "normal", "tangential", "eccentricity", "cap_factor", "reduced_stiffness", "surface_energy",
-                            "plastic_transition", "lambda_max", "epsilon_max"});
+                            "plastic_transition", "lambda_max", "epsilon_max", "rolling_hysteresis"});
     const YAML::Node pair = in["materials"];
     if (!pair || !pair.IsSequence() || pair.size() != 2) r.fail(pair ? pair : in, where + ".materials", "must be a pair [material, material]");
     InteractionSpec spec;
@@ -293,6 +293,11 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
     if (!(spec.stiffnessScale > 0.0 && spec.stiffnessScale <= 1.0)) r.fail(in["reduced_stiffness"], where + ".reduced_stiffness", "must be in (0, 1] (E_mod / E)");
     spec.surfaceEnergy = r.number(in, "surface_energy", where, 0.0);
     if (spec.surfaceEnergy < 0.0) r.fail(in["surface_energy"], where + ".surface_energy", "must be >= 0 (J/m^2)");
+    spec.rollingHysteresis = r.number(in, "rolling_hysteresis", where, 0.0);
+    if (spec.rollingHysteresis < 0.0) r.fail(in["rolling_hysteresis"], where + ".rolling_hysteresis", "must be >= 0 (dgamma/gamma)");
+    if (spec.rollingHysteresis > 0.0 && !(spec.surfaceEnergy > 0.0)) {
+      r.fail(in["rolling_hysteresis"], where + ".rolling_hysteresis", "needs surface_energy > 0 (adhesive rolling resistance, 001 Eqs. 18-22)");
+    }
     if (spec.normal == NormalLaw::BeckerKamlah) {
       for (const std::uint32_t m : {spec.materialA, spec.materialB}) {
         if (!(scene.materials[m].material.yieldStrength > 0.0)) {

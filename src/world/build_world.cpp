@@ -109,6 +109,9 @@ World buildWorld(const Scene& scene) {
     model.effectiveModulus *= in.stiffnessScale;
     model.effectiveShear *= in.stiffnessScale;
     model.surfaceEnergy = in.surfaceEnergy * std::pow(in.stiffnessScale, 0.4);  // 001 Eq. 24
+    model.rollingHysteresis = in.rollingHysteresis;
+    model.realModulus = model.effectiveModulus / in.stiffnessScale;  // F_C, xi_crit of the real material
+    model.realSurfaceEnergy = in.surfaceEnergy;
     minScale = std::min(minScale, in.stiffnessScale);
     world.setContactModel(in.materialA, in.materialB, model);
   }

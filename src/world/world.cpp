@@ -93,6 +93,7 @@ void World::applyLaw(Contact& c) const {
   const Vec3 point = 0.5 * (c.geometry.pointA + c.geometry.pointB);
   ContactKinematics motion;
   motion.volumeRadiusA = shapes_[p.shape[c.a]].volumeEquivalentRadius();
+  motion.angularVelocityA = p.angularVelocity[c.a];
   const Vec3 velocityA = p.velocity[c.a] + p.angularVelocity[c.a].cross(point - p.position[c.a]);
   const ContactModel* law;
   if (c.onWall()) {
@@ -104,6 +105,7 @@ void World::applyLaw(Contact& c) const {
     const Vec3 centreB = p.position[c.b] + c.shift;
     motion.relativeVelocity = p.velocity[c.b] + p.angularVelocity[c.b].cross(point - centreB) - velocityA;
     motion.volumeRadiusB = shapes_[p.shape[c.b]].volumeEquivalentRadius();
+    motion.angularVelocityB = p.angularVelocity[c.b];
     motion.effectiveMass = p.mass[c.a] * p.mass[c.b] / (p.mass[c.a] + p.mass[c.b]);
     law = &model(p.material[c.a], p.material[c.b]);
   }
@@ -192,12 +194,12 @@ void World::computeForces() {
     const Vec3 point = 0.5 * (g.pointA + g.pointB);
     const Vec3& F = c.force.onB;
     p.force[c.a] -= F;
-    p.torque[c.a] -= (point - p.position[c.a]).cross(F);
+    p.torque[c.a] -= (point - p.position[c.a]).cross(F) + c.force.momentOnB;
     if (c.onWall()) {
       walls_[c.b & ~wallFlag].force += F;
     } else {
       p.force[c.b] += F;
-      p.torque[c.b] += (point - (p.position[c.b] + c.shift)).cross(F);
+      p.torque[c.b] += (point - (p.position[c.b] + c.shift)).cross(F) + c.force.momentOnB;
     }
     touching_.push_back(static_cast<std::uint32_t>(pairs_.size()));
     pairs_.push_back(std::move(c));

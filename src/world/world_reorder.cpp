@@ -30,8 +30,9 @@ void exchangeBodies(Contact& c) {
   g.normal = -g.normal;
   std::swap(g.curvatureA, g.curvatureB);
   std::swap(g.localPointA, g.localPointB);
-  c.history.spring = -c.history.spring;
+  c.history.spring = -c.history.spring;  // the rolling displacement is symmetric in A and B (Eq. 20)
   c.force.onB = -c.force.onB;
+  c.force.momentOnB = -c.force.momentOnB;
 }
 
 }  // namespace

@@ -32,6 +32,16 @@
 //                             Hertz term, on the Hertz-equivalent sphere R* = gamma^2 Rc; the
 //                             contact acts for overlap > 0 only (the simplified model breaks at
 //                             delta = 0), the Coulomb cap becomes mu |F_n + 2 F_C| (001 Eq. 17)
+//   rolling (optional, with   Dominik-Tielens/Krijt rolling resistance as in Haervig (001 Eqs.
+//   adhesion)                 18-22): rolling displacement xi integrated from
+//                             v_L = R (w_A - w_B) x n + 1/2 (r_A - r_B)/(r_A + r_B) v_S (Eq. 20;
+//                             n from A to B, v_S the sliding velocity of A relative to B, R the
+//                             Hertz-equivalent radius, r_k volume radii, r_B -> inf for a wall),
+//                             kept in the tangent plane, truncated at |xi| <= xi_crit =
+//                             a_0/12 (dgamma/gamma) (Eqs. 18, 22); moment on A -k_r n x xi,
+//                             k_r = 4 F_C (a/a_0)^3/2 (Eq. 21). With reduced stiffness F_C and
+//                             xi_crit use the real E* and gamma, a/a_0 the modified contact
+//                             (001 Section 3.2).
 //   total normal force        not clamped: near the end of a damped contact it turns slightly
 //                             tensile, which the restitution relation zeta(e) of 001 Eq. 12
 //                             assumes (clamping it would raise the effective e, 0.30 -> 0.40).
@@ -63,6 +73,11 @@ struct ContactModel {
   double lambdaMax = 0.0;          ///< l_max (-); 0: NMC fit (002 Eq. 54)
   double epsilonMax = 0.0;         ///< e_max (-); 0: NMC fit (002 Eq. 54)
 
+  // Rolling resistance (needs adhesion): 0 = off.
+  double rollingHysteresis = 0.0;  ///< dgamma/gamma (-), Eq. 18
+  double realModulus = 0.0;        ///< E* of the unreduced material (Pa), for F_C and xi_crit
+  double realSurfaceEnergy = 0.0;  ///< gamma of the unreduced material (J/m^2)
+
   /// True for laws whose elliptic contact needs the detector's curvatures.
   bool usesCurvatures() const { return normal != NormalLaw::VolumeSphereHertz; }
 };
@@ -71,6 +86,7 @@ struct ContactModel {
 struct ContactHistory {
   Vec3 spring = Vec3::Zero();  ///< tangential spring (m)
   double maxOverlap = 0.0;     ///< largest overlap reached (m): the plastic state of Becker-Kamlah
+  Vec3 rolling = Vec3::Zero(); ///< rolling displacement xi (m)
 };
 
 /// What the law needs besides the geometry.
@@ -79,12 +95,15 @@ struct ContactKinematics {
   double effectiveMass = 0.0;            ///< m* (kg)
   double volumeRadiusA = 0.0;            ///< R_vol of A (m)
   double volumeRadiusB = 0.0;            ///< R_vol of B (m); 0 for a wall
+  Vec3 angularVelocityA = Vec3::Zero();  ///< (rad/s)
+  Vec3 angularVelocityB = Vec3::Zero();  ///< (rad/s), 0 for a wall
 };
 
 struct ContactForce {
   Vec3 onB = Vec3::Zero();  ///< force on B (N); A receives -onB
   double normal = 0.0;      ///< normal force magnitude (N)
   double area = 0.0;        ///< contact area (m^2)
+  Vec3 momentOnB = Vec3::Zero();  ///< pure moment on B (N m), rolling resistance; A receives -momentOnB
 };
 
 /// Force of a touching contact; its history is updated; step dt (s).
