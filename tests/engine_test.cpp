@@ -270,8 +270,14 @@ TEST(Engine, SceneErrorsNameLineKeyAndWhatIsAllowed) {
                    "'interactions[0].normal': becker_kamlah needs yield_strength (Pa) in material 'glass'");
   expectSceneError(withInteraction("    lambda_max: 2.5\n"),
                    "plastic_transition, lambda_max and epsilon_max belong to normal: becker_kamlah");
+  expectSceneError(withInteraction("    roughness: {sigma: 1.0e-6}\n"), "'interactions[0].roughness.asperity_count': missing");
+  expectSceneError(withInteraction("    roughness: {sigma: 1.0e-6, asperity_count: 10}\n    surface_energy: 0.1\n"),
+                   "Greenwood-Williamson roughness goes with the elastic normal laws, without surface_energy");
   expectSceneError("seed: [1", "not valid YAML");
-  // A region too small for the particles is reported before anything runs.
+  // A roughness range beyond the skin, and a region too small for the particles, are reported
+  // before anything runs.
+  EXPECT_THROW(buildWorld(loadScene(writeScene("rough", withInteraction("    roughness: {sigma: 1.0e-4, asperity_count: 10}\n")))),
+               SceneError);
   const Scene crowded = loadScene(writeScene("crowded", replaced(bedScene, "count: 60", "count: 5000")));
   EXPECT_THROW(buildWorld(crowded), SceneError);
 }

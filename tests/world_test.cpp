@@ -9,6 +9,7 @@
 
 #include "sqdem/mechanics/collision_time.hpp"
 #include "sqdem/mechanics/haervig.hpp"
+#include "sqdem/mechanics/roughness_gw.hpp"
 #include "sqdem/world/packing_measures.hpp"
 #include "sqdem/world/world.hpp"
 
@@ -272,6 +273,37 @@ TEST(World, RollingResistanceHoldsBelowTheYieldForceAndRollsAbove) {
   std::printf("travel over the last 1e-4 s: %.3g xi_crit at F/F_yield = 0.9, %.3g at 1.1\n", held, rolling);
   EXPECT_LT(std::abs(held), 2.0);  // at rest up to the elastic rolling oscillation (amplitude <= 2 xi_crit)
   EXPECT_GT(rolling, 1000.0);      // rolls on
+}
+
+// Greenwood-Williamson roughness (004 Eqs. 33, 35): a rough sphere comes to rest on a wall
+// at the gap g = sigma h* where the asperity force carries its weight,
+// 4/3 N A_n E* Rc^1/2 sigma^3/2 gamma F_3/2(h*) = m g (sphere on a flat: Rc = R/2, gamma = sqrt 2);
+// the mean surfaces never touch.
+TEST(World, RoughSphereRestsOnItsAsperities) {
+  omp_set_num_threads(1);
+  const double R = 1e-3, sigma = 1e-6, asperities = 100.0, g = 9.81;
+  World world({Superquadric::sphere(R)}, {Material{1e8, 0.3, 2500.0, 0.0, 0.3}}, bigBox(), 1e-4);
+  ContactModel law = world.defaultContactModel(0, 0);
+  law.roughnessSigma = sigma;
+  law.asperityCount = asperities;
+  world.setContactModel(0, 0, law);
+  world.addWall(Wall{.plane = Plane{Vec3::Zero(), Vec3::UnitZ()}});
+  world.addParticle(0, 0, Vec3(0.0, 0.0, R + 3.5 * sigma), Quat::Identity());
+  world.setGravity(Vec3(0.0, 0.0, -g));
+  world.setTimeStep(1e-6);
+  for (int step = 0; step < 40000; ++step) world.step();
+  ASSERT_EQ(world.contacts().size(), 1u);
+  const double weight = world.particles().mass[0] * g;
+  const double scale = 4.0 / 3.0 * asperities * law.effectiveModulus * std::sqrt(0.5 * R) * std::pow(sigma, 1.5) * std::sqrt(2.0);
+  double lo = 0.0, hi = 4.0;  // F_3/2 decreases with h
+  for (int k = 0; k < 100; ++k) {
+    const double mid = 0.5 * (lo + hi);
+    (scale * greenwoodWilliamsonForceIntegral(mid) > weight ? lo : hi) = mid;
+  }
+  const double gap = world.particles().position[0].z() - R;
+  std::printf("resting gap %.6g sigma, equilibrium h* = %.6g\n", gap / sigma, lo);
+  EXPECT_NEAR(gap / sigma, lo, 1e-4 * lo);
+  EXPECT_NEAR(world.walls()[0].force.z(), -weight, 1e-4 * weight);
 }
 
 // The slab volume of a tilted ellipsoid (packing_measures.hpp) against a grid count of the

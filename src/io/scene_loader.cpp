@@ -263,7 +263,7 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
     const YAML::Node in = interactions[k];
     const std::string where = "interactions[" + std::to_string(k) + "]";
     r.allowOnly(in, where, {"materials", "normal", "tangential", "eccentricity", "cap_factor", "reduced_stiffness", "surface_energy",
-                            "plastic_transition", "lambda_max", "epsilon_max", "rolling_hysteresis"});
+                            "plastic_transition", "lambda_max", "epsilon_max", "rolling_hysteresis", "roughness"});
     const YAML::Node pair = in["materials"];
     if (!pair || !pair.IsSequence() || pair.size() != 2) r.fail(pair ? pair : in, where + ".materials", "must be a pair [material, material]");
     InteractionSpec spec;
@@ -297,6 +297,15 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
     if (spec.rollingHysteresis < 0.0) r.fail(in["rolling_hysteresis"], where + ".rolling_hysteresis", "must be >= 0 (dgamma/gamma)");
     if (spec.rollingHysteresis > 0.0 && !(spec.surfaceEnergy > 0.0)) {
       r.fail(in["rolling_hysteresis"], where + ".rolling_hysteresis", "needs surface_energy > 0 (adhesive rolling resistance, 001 Eqs. 18-22)");
+    }
+    if (const YAML::Node rough = in["roughness"]) {
+      const std::string at = where + ".roughness";
+      r.allowOnly(rough, at, {"sigma", "asperity_count"});
+      spec.roughnessSigma = r.positive(rough, "sigma", at, "m, standard deviation of asperity heights");
+      spec.asperityCount = r.positive(rough, "asperity_count", at, "N A_n, asperities on the nominal contact area");
+      if (spec.normal == NormalLaw::BeckerKamlah || spec.surfaceEnergy > 0.0) {
+        r.fail(rough, at, "Greenwood-Williamson roughness goes with the elastic normal laws, without surface_energy");
+      }
     }
     if (spec.normal == NormalLaw::BeckerKamlah) {
       for (const std::uint32_t m : {spec.materialA, spec.materialB}) {

@@ -110,6 +110,13 @@ World buildWorld(const Scene& scene) {
     model.effectiveShear *= in.stiffnessScale;
     model.surfaceEnergy = in.surfaceEnergy * std::pow(in.stiffnessScale, 0.4);  // 001 Eq. 24
     model.rollingHysteresis = in.rollingHysteresis;
+    model.roughnessSigma = in.roughnessSigma;
+    model.asperityCount = in.asperityCount;
+    if (model.range() > world.neighbourList().skin()) {
+      throw SceneError(scene.path + ": interactions: roughness sigma = " + std::to_string(in.roughnessSigma) +
+                       " m acts up to a gap of 4 sigma, beyond the skin " + std::to_string(world.neighbourList().skin()) +
+                       " m: raise 'skin' to at least 4 sigma");
+    }
     model.realModulus = model.effectiveModulus / in.stiffnessScale;  // F_C, xi_crit of the real material
     model.realSurfaceEnergy = in.surfaceEnergy;
     minScale = std::min(minScale, in.stiffnessScale);

@@ -3,6 +3,7 @@
 #include "sqdem/mechanics/becker_kamlah.hpp"
 #include "sqdem/mechanics/haervig.hpp"
 #include "sqdem/mechanics/mindlin_deresiewicz.hpp"
+#include "sqdem/mechanics/roughness_gw.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -123,21 +124,28 @@ ContactForce contactForce(const ContactModel& model, const ContactGeometry& geom
   const double delta = geometry.overlap;
   const Vec3& n = geometry.normal;
   const HertzContact h = hertzContact(model, geometry, motion);
-  const double gamma = h.factors.gamma, sqrtRc = std::sqrt(h.Rc), sqrtDelta = std::sqrt(delta);
+  const double gamma = h.factors.gamma, sqrtRc = std::sqrt(h.Rc), sqrtDelta = std::sqrt(std::max(delta, 0.0));
   // Adhesion: Haervig's simplified JKR on the Hertz-equivalent sphere R* = gamma^2 Rc.
   const double Rhertz = gamma * gamma * h.Rc;
   std::optional<HaervigJkr> jkr;
   if (model.surfaceEnergy > 0.0) jkr.emplace(model.effectiveModulus, model.surfaceEnergy, Rhertz);
 
   double elastic, area = std::numbers::pi * h.Rc * h.factors.beta * delta;
+  double Sn = 2.0 * model.effectiveModulus * gamma * sqrtRc * sqrtDelta;  // dF/d(delta) of elliptic Hertz
   if (model.normal == NormalLaw::BeckerKamlah) {
     const BeckerKamlahState state = beckerKamlahForce(model, h, motion, delta, history.maxOverlap);
     elastic = state.force;
     area = std::numbers::pi * state.contactRadius * state.contactRadius;
+  } else if (model.roughnessSigma > 0.0) {
+    const RoughContact rough{model.asperityCount, model.roughnessSigma};
+    const double hs = -delta / model.roughnessSigma, step = 1e-4;
+    elastic = rough.force(model.effectiveModulus, h.Rc, gamma, hs);
+    area = rough.area(h.Rc, h.factors.beta, hs);
+    Sn = (rough.force(model.effectiveModulus, h.Rc, gamma, hs - step) -
+          rough.force(model.effectiveModulus, h.Rc, gamma, hs + step)) / (2.0 * step * model.roughnessSigma);
   } else {
     elastic = jkr ? jkr->normalForce(delta) : 4.0 / 3.0 * model.effectiveModulus * sqrtRc * gamma * delta * sqrtDelta;
   }
-  const double Sn = 2.0 * model.effectiveModulus * gamma * sqrtRc * sqrtDelta;  // dF/d(delta) of elliptic Hertz
   const double dampingScale = 2.0 * std::sqrt(5.0 / 6.0) * model.dampingRatio;
   const double normalRate = -motion.relativeVelocity.dot(n);  // > 0 approaching
   const double Fn = elastic + dampingScale * std::sqrt(motion.effectiveMass * Sn) * normalRate;

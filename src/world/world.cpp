@@ -58,10 +58,9 @@ void World::detect(Contact& c) const {
   const ParticleStore& p = particles_;
   const Superquadric& A = shapes_[p.shape[c.a]];
   const Pose poseA{p.position[c.a], p.orientation[c.a]};
-  // A law that does not use the curvatures does not pay for them.
-  const bool curvatures = model(p.material[c.a], c.onWall() ? walls_[c.b & ~wallFlag].material : p.material[c.b]).usesCurvatures();
-  if (c.onWall()) {
-    c.geometry = detectContact(A, poseA, walls_[c.b & ~wallFlag].plane, {.curvatures = curvatures});
+  const bool curvatures = lawOf(c).usesCurvatures();  // a law that does not use them does not pay for them
+  if (c.onWall()) {  // gaps within the skin too: rough contacts act across a gap
+    c.geometry = detectContact(A, poseA, walls_[c.b & ~wallFlag].plane, {.cutoff = neighbours_.skin(), .curvatures = curvatures});
     return;
   }
   // A pair found separated stays so until the particles could have moved by its gap.
@@ -84,7 +83,7 @@ void World::detect(Contact& c) const {
 }
 
 void World::applyLaw(Contact& c) const {
-  if (!c.geometry.touching()) {
+  if (!interacting(c)) {
     c.force = {};
     c.history = {};  // separated: the history ends
     return;
@@ -95,21 +94,18 @@ void World::applyLaw(Contact& c) const {
   motion.volumeRadiusA = shapes_[p.shape[c.a]].volumeEquivalentRadius();
   motion.angularVelocityA = p.angularVelocity[c.a];
   const Vec3 velocityA = p.velocity[c.a] + p.angularVelocity[c.a].cross(point - p.position[c.a]);
-  const ContactModel* law;
   if (c.onWall()) {
     const Wall& wall = walls_[c.b & ~wallFlag];
     motion.relativeVelocity = wall.velocity - velocityA;
     motion.effectiveMass = p.mass[c.a];
-    law = &model(p.material[c.a], wall.material);
   } else {
     const Vec3 centreB = p.position[c.b] + c.shift;
     motion.relativeVelocity = p.velocity[c.b] + p.angularVelocity[c.b].cross(point - centreB) - velocityA;
     motion.volumeRadiusB = shapes_[p.shape[c.b]].volumeEquivalentRadius();
     motion.angularVelocityB = p.angularVelocity[c.b];
     motion.effectiveMass = p.mass[c.a] * p.mass[c.b] / (p.mass[c.a] + p.mass[c.b]);
-    law = &model(p.material[c.a], p.material[c.b]);
   }
-  c.force = contactForce(*law, c.geometry, motion, c.history, dt_);
+  c.force = contactForce(lawOf(c), c.geometry, motion, c.history, dt_);
 }
 
 void World::computeForces() {
@@ -177,7 +173,7 @@ void World::computeForces() {
   }
   for (Wall& w : walls_) w.force.setZero();
   pairs_.clear();
-  touching_.clear();
+  interacting_.clear();
   for (Contact& c : next) {
     const ContactGeometry& g = c.geometry;
     if (!c.onWall()) {
@@ -186,7 +182,7 @@ void World::computeForces() {
     }
     if (g.status != ContactStatus::Converged && g.status != ContactStatus::Separated) ++statistics_.detectorFailures;
     if (!g.converged() && c.separation <= 0.0) continue;
-    if (!g.touching()) {  // a gap: kept only as the next step's warm start or cull
+    if (!interacting(c)) {  // a gap: kept only as the next step's warm start or cull
       pairs_.push_back(std::move(c));
       continue;
     }
@@ -201,7 +197,7 @@ void World::computeForces() {
       p.force[c.b] += F;
       p.torque[c.b] += (point - (p.position[c.b] + c.shift)).cross(F) + c.force.momentOnB;
     }
-    touching_.push_back(static_cast<std::uint32_t>(pairs_.size()));
+    interacting_.push_back(static_cast<std::uint32_t>(pairs_.size()));
     pairs_.push_back(std::move(c));
   }
   forcesCurrent_ = true;

@@ -52,9 +52,9 @@ void World::reorderAlongHilbertCurve() {
     if (c.a > c.b) exchangeBodies(c);
   }
   std::sort(pairs_.begin(), pairs_.end(), [](const Contact& x, const Contact& y) { return x.key() < y.key(); });
-  touching_.clear();
+  interacting_.clear();
   for (std::uint32_t k = 0; k < pairs_.size(); ++k) {
-    if (pairs_[k].geometry.touching()) touching_.push_back(k);
+    if (interacting(pairs_[k])) interacting_.push_back(k);
   }
   neighbours_.invalidate();
 }

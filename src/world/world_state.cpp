@@ -54,7 +54,7 @@ void World::writeState(std::ostream& out) const {
   putVector(out, boundingRadius_);
   putVector(out, walls_);
   putVector(out, pairs_);
-  putVector(out, touching_);
+  putVector(out, interacting_);
   putVector(out, neighbours_.referencePositions());
   putVector(out, neighbours_.pairs());
   put(out, neighbours_.builds());
@@ -85,7 +85,7 @@ void World::readState(std::istream& in) {
   getVector(in, boundingRadius_, n);
   getVector(in, walls_, walls);
   getVector(in, pairs_, limit);
-  getVector(in, touching_, limit);
+  getVector(in, interacting_, limit);
   std::vector<Vec3> reference;
   std::vector<CandidatePair> candidates;
   int builds = 0;

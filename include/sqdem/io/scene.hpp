@@ -46,6 +46,7 @@ struct InteractionSpec {
   double capFactor = 10.0;
   double stiffnessScale = 1.0;  ///< reduced-stiffness factor E_mod/E (001 Eq. 24)
   double surfaceEnergy = 0.0;   ///< gamma (J/m^2) of the real material; 0: no adhesion
+  double roughnessSigma = 0.0, asperityCount = 0.0;  ///< Greenwood-Williamson sigma_s (m), N A_n (0: smooth)
   double rollingHysteresis = 0.0;  ///< dgamma/gamma of the rolling resistance (0: off, needs adhesion)
   bool plasticTransition = true;  ///< Becker-Kamlah: lambda(c) transition (false: elastic - fully plastic)
   double lambdaMax = 0.0, epsilonMax = 0.0;  ///< Becker-Kamlah: explicit l_max, e_max (0: NMC fits)

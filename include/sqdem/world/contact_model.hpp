@@ -28,6 +28,13 @@
 //                             r_IJ = 2 r_I, the particle and its mirror image: an assumption,
 //                             002 treats particle pairs only). Damping as above with the elliptic
 //                             Hertz stiffness; the history is dropped when the pair separates.
+//   roughness (optional)      Greenwood-Williamson (004 Eqs. 29-36) in place of the smooth elastic
+//                             force: F = 4/3 N A_n E* Rc^1/2 sigma^3/2 gamma F_3/2(h), area
+//                             pi N A_n Rc sigma beta F_1(h), h = -delta/sigma the standardised
+//                             separation of the mean surfaces (the detector's overlap, < 0 for a
+//                             gap), Rc, gamma, beta of the particles' elliptic contact as 004
+//                             prescribes after Eq. 34; the force acts from a gap of 4 sigma
+//                             (F_3/2(4)/F_3/2(0) = 1.0e-5), damping with S_n = dF/d(delta).
 //   adhesion (optional)       Haervig's simplified JKR (001 Eqs. 7-10) in place of the elastic
 //                             Hertz term, on the Hertz-equivalent sphere R* = gamma^2 Rc; the
 //                             contact acts for overlap > 0 only (the simplified model breaks at
@@ -73,11 +80,16 @@ struct ContactModel {
   double lambdaMax = 0.0;          ///< l_max (-); 0: NMC fit (002 Eq. 54)
   double epsilonMax = 0.0;         ///< e_max (-); 0: NMC fit (002 Eq. 54)
 
+  // Greenwood-Williamson roughness: sigma = 0 = smooth.
+  double roughnessSigma = 0.0;     ///< sigma_s, standard deviation of asperity heights (m)
+  double asperityCount = 0.0;      ///< N A_n, asperities on the nominal contact area (-)
   // Rolling resistance (needs adhesion): 0 = off.
   double rollingHysteresis = 0.0;  ///< dgamma/gamma (-), Eq. 18
   double realModulus = 0.0;        ///< E* of the unreduced material (Pa), for F_C and xi_crit
   double realSurfaceEnergy = 0.0;  ///< gamma of the unreduced material (J/m^2)
 
+  /// Largest gap (m) at which the law still acts: 4 sigma for rough contacts, else 0.
+  double range() const { return 4.0 * roughnessSigma; }
   /// True for laws whose elliptic contact needs the detector's curvatures.
   bool usesCurvatures() const { return normal != NormalLaw::VolumeSphereHertz; }
 };
@@ -106,7 +118,8 @@ struct ContactForce {
   Vec3 momentOnB = Vec3::Zero();  ///< pure moment on B (N m), rolling resistance; A receives -momentOnB
 };
 
-/// Force of a touching contact; its history is updated; step dt (s).
+/// Force of a contact within the law's range (overlap > -range()); its history is updated;
+/// step dt (s).
 ContactForce contactForce(const ContactModel& model, const ContactGeometry& geometry,
                           const ContactKinematics& motion, ContactHistory& history, double dt);
 

@@ -51,7 +51,7 @@ struct Wall {
 
 inline constexpr std::uint32_t wallFlag = 0x80000000u;
 
-/// A touching pair and its history. b is a particle slot, or wallFlag | wall index.
+/// A candidate pair and its history. b is a particle slot, or wallFlag | wall index.
 struct Contact {
   std::uint32_t a = 0, b = 0;
   Vec3 shift = Vec3::Zero();    ///< periodic image offset of b (m)
@@ -120,9 +120,10 @@ class World {
   const std::vector<Material>& materials() const { return materials_; }
   std::vector<Wall>& walls() { return walls_; }
   const std::vector<Wall>& walls() const { return walls_; }
-  /// The touching contacts of the last force computation, in key order.
+  /// The contacts that carried force in the last computation (touching, or rough within
+  /// range), in key order.
   auto contacts() const {
-    return touching_ | std::views::transform([this](std::uint32_t k) -> const Contact& { return pairs_[k]; });
+    return interacting_ | std::views::transform([this](std::uint32_t k) -> const Contact& { return pairs_[k]; });
   }
   const Domain& domain() const { return domain_; }
   const WorldStatistics& statistics() const { return statistics_; }
@@ -152,6 +153,11 @@ class World {
 
  private:
   const ContactModel& model(std::uint32_t ma, std::uint32_t mb) const { return models_[ma * materials_.size() + mb]; }
+  const ContactModel& lawOf(const Contact& c) const {
+    return model(particles_.material[c.a], c.onWall() ? walls_[c.b & ~wallFlag].material : particles_.material[c.b]);
+  }
+  /// Within its law's range: touching, or a rough contact's gap below 4 sigma.
+  bool interacting(const Contact& c) const { return c.geometry.converged() && c.geometry.overlap > -lawOf(c).range(); }
   void detect(Contact& c) const;    ///< narrow phase, warm-started from c.geometry
   void applyLaw(Contact& c) const;  ///< force of a touching contact, updates its history
 
@@ -165,7 +171,7 @@ class World {
   std::vector<double> boundingRadius_;
   std::vector<Wall> walls_;
   std::vector<Contact> pairs_;            ///< touching contacts, gaps within the skin and separated pairs with a gap bound, key order
-  std::vector<std::uint32_t> touching_;   ///< indices of the touching ones in pairs_
+  std::vector<std::uint32_t> interacting_;  ///< indices of the force-carrying ones in pairs_
   WorldStatistics statistics_;
   StepTiming timing_;
   Vec3 gravity_ = Vec3::Zero();
