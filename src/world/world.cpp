@@ -16,6 +16,15 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
 
+/// A fresh candidate (no geometry, no history): b seen at its position + shift from a.
+Contact candidate(std::uint32_t a, std::uint32_t b, const Vec3& shift = Vec3::Zero()) {
+  Contact c;
+  c.a = a;
+  c.b = b;
+  c.shift = shift;
+  return c;
+}
+
 }  // namespace
 
 World::World(std::vector<Superquadric> shapes, std::vector<Material> materials, const Domain& domain, double skin,
@@ -108,41 +117,24 @@ void World::applyLaw(Contact& c) const {
   c.force = contactForce(lawOf(c), c.geometry, motion, c.history, dt_);
 }
 
-void World::computeForces() {
-  for (std::size_t k = 0; k < models_.size(); ++k) {
-    if (!modelSet_[k]) throw std::logic_error("World: a material pair has no contact model");
-  }
-  const auto start = Clock::now();
-  ParticleStore& p = particles_;
-  if (neighbours_.needsRebuild(p)) {
-    if (reorderInterval_ > 0 && neighbours_.builds() % reorderInterval_ == 0) reorderAlongHilbertCurve();
-    neighbours_.rebuild(p, boundingRadius_);
-  }
-
+void World::buildCandidates() {
   // Candidates in key order (a, then b with walls after particles): for each particle its pairs
   // from the neighbour list (sorted by (a, b)), then the walls within reach.
+  const ParticleStore& p = particles_;
   std::vector<Contact> next;
   next.reserve(neighbours_.pairs().size() + pairs_.size());
   const double skin = neighbours_.skin();
   auto pair = neighbours_.pairs().begin();
   const auto pairsEnd = neighbours_.pairs().end();
   for (std::uint32_t i = 0; i < p.size(); ++i) {
-    for (; pair != pairsEnd && pair->a == i; ++pair) {
-      Contact& c = next.emplace_back();
-      c.a = i;
-      c.b = pair->b;
-      c.shift = pair->shift;
-    }
+    for (; pair != pairsEnd && pair->a == i; ++pair) next.push_back(candidate(i, pair->b, pair->shift));
     for (std::uint32_t w = 0; w < walls_.size(); ++w) {
       const Plane& plane = walls_[w].plane;
       if ((p.position[i] - plane.point).dot(plane.normal) < boundingRadius_[i] + skin) {
-        Contact& c = next.emplace_back();
-        c.a = i;
-        c.b = wallFlag | w;
+        next.push_back(candidate(i, wallFlag | w));
       }
     }
   }
-
   // Carry the history of pairs that persist (both lists are sorted by key).
   auto previous = pairs_.begin();
   for (Contact& c : next) {
@@ -153,16 +145,41 @@ void World::computeForces() {
       c.separation = previous->separation;
     }
   }
+  pairs_ = std::move(next);
+  wallReference_.clear();
+  for (const Wall& w : walls_) wallReference_.push_back(w.plane.point);
+}
+
+bool World::wallsMovedHalfSkin() const {
+  if (wallReference_.size() != walls_.size()) return true;
+  const double limit = 0.25 * neighbours_.skin() * neighbours_.skin();
+  for (std::size_t w = 0; w < walls_.size(); ++w) {
+    if ((walls_[w].plane.point - wallReference_[w]).squaredNorm() > limit) return true;
+  }
+  return false;
+}
+
+void World::computeForces() {
+  for (std::size_t k = 0; k < models_.size(); ++k) {
+    if (!modelSet_[k]) throw std::logic_error("World: a material pair has no contact model");
+  }
+  const auto start = Clock::now();
+  ParticleStore& p = particles_;
+  if (neighbours_.needsRebuild(p) || wallsMovedHalfSkin()) {
+    if (reorderInterval_ > 0 && neighbours_.builds() % reorderInterval_ == 0) reorderAlongHilbertCurve();
+    neighbours_.rebuild(p, boundingRadius_);
+    buildCandidates();
+  }
 
   const auto detected = Clock::now();
   timing_.broadPhase += seconds(detected - start);
-  const auto count = static_cast<std::ptrdiff_t>(next.size());
+  const auto count = static_cast<std::ptrdiff_t>(pairs_.size());
 #pragma omp parallel for schedule(dynamic, 64)
-  for (std::ptrdiff_t k = 0; k < count; ++k) detect(next[k]);
+  for (std::ptrdiff_t k = 0; k < count; ++k) detect(pairs_[k]);
   const auto lawStart = Clock::now();
   timing_.detection += seconds(lawStart - detected);
 #pragma omp parallel for schedule(dynamic, 64)
-  for (std::ptrdiff_t k = 0; k < count; ++k) applyLaw(next[k]);
+  for (std::ptrdiff_t k = 0; k < count; ++k) applyLaw(pairs_[k]);
   const auto reduction = Clock::now();
   timing_.law += seconds(reduction - lawStart);
 
@@ -172,20 +189,20 @@ void World::computeForces() {
     p.torque[i].setZero();
   }
   for (Wall& w : walls_) w.force.setZero();
-  pairs_.clear();
   interacting_.clear();
-  for (Contact& c : next) {
+  for (std::uint32_t k = 0; k < pairs_.size(); ++k) {
+    Contact& c = pairs_[k];
     const ContactGeometry& g = c.geometry;
     if (!c.onWall()) {
       ++statistics_.detectorCalls;
       statistics_.detectorIterations += g.iterations;
     }
     if (g.status != ContactStatus::Converged && g.status != ContactStatus::Separated) ++statistics_.detectorFailures;
-    if (!g.converged() && c.separation <= 0.0) continue;
-    if (!interacting(c)) {  // a gap: kept only as the next step's warm start or cull
-      pairs_.push_back(std::move(c));
+    if (!g.converged() && c.separation <= 0.0) {  // nothing to warm-start or cull from next step
+      c = candidate(c.a, c.b, c.shift);
       continue;
     }
+    if (!interacting(c)) continue;  // a gap: kept as the next step's warm start or cull
     if (g.overlap > 0.5 * shapes_[p.shape[c.a]].volumeEquivalentRadius()) ++statistics_.deepOverlaps;
     const Vec3 point = 0.5 * (g.pointA + g.pointB);
     const Vec3& F = c.force.onB;
@@ -197,8 +214,7 @@ void World::computeForces() {
       p.force[c.b] += F;
       p.torque[c.b] += (point - (p.position[c.b] + c.shift)).cross(F) + c.force.momentOnB;
     }
-    interacting_.push_back(static_cast<std::uint32_t>(pairs_.size()));
-    pairs_.push_back(std::move(c));
+    interacting_.push_back(k);
   }
   forcesCurrent_ = true;
   timing_.reduction += seconds(Clock::now() - reduction);

@@ -14,7 +14,7 @@
 namespace sqdem {
 namespace {
 
-constexpr char magic[8] = {'s', 'q', 'd', 'e', 'm', 'c', 'k', '3'};
+constexpr char magic[8] = {'s', 'q', 'd', 'e', 'm', 'c', 'k', '4'};
 
 template <typename T>
 void put(std::ostream& out, const T& value) {
@@ -53,6 +53,7 @@ void World::writeState(std::ostream& out) const {
   ParticleStore::forEachArray(particles_, [&](const auto& array) { putVector(out, array); });
   putVector(out, boundingRadius_);
   putVector(out, walls_);
+  putVector(out, wallReference_);
   putVector(out, pairs_);
   putVector(out, interacting_);
   putVector(out, neighbours_.referencePositions());
@@ -84,6 +85,7 @@ void World::readState(std::istream& in) {
   ParticleStore::forEachArray(particles_, [&](auto& array) { getVector(in, array, n); });
   getVector(in, boundingRadius_, n);
   getVector(in, walls_, walls);
+  getVector(in, wallReference_, walls);
   getVector(in, pairs_, limit);
   getVector(in, interacting_, limit);
   std::vector<Vec3> reference;

@@ -158,6 +158,11 @@ class World {
   }
   /// Within its law's range: touching, or a rough contact's gap below 4 sigma.
   bool interacting(const Contact& c) const { return c.geometry.converged() && c.geometry.overlap > -lawOf(c).range(); }
+  /// The candidate list from the neighbour list and the walls within reach, carrying the
+  /// histories of persisting pairs; kept until the next rebuild (particles or walls moved more
+  /// than half the skin), so steps in between copy no contact records.
+  void buildCandidates();
+  bool wallsMovedHalfSkin() const;
   void detect(Contact& c) const;    ///< narrow phase, warm-started from c.geometry
   void applyLaw(Contact& c) const;  ///< force of a touching contact, updates its history
 
@@ -170,7 +175,8 @@ class World {
   ParticleStore particles_;
   std::vector<double> boundingRadius_;
   std::vector<Wall> walls_;
-  std::vector<Contact> pairs_;            ///< touching contacts, gaps within the skin and separated pairs with a gap bound, key order
+  std::vector<Vec3> wallReference_;       ///< wall points at the last candidate build
+  std::vector<Contact> pairs_;            ///< every candidate of the current neighbour list, key order
   std::vector<std::uint32_t> interacting_;  ///< indices of the force-carrying ones in pairs_
   WorldStatistics statistics_;
   StepTiming timing_;
