@@ -56,12 +56,12 @@ TEST(Elliptic, CrossedAndParallelCylinders) {
                                               curvatures(1 / r, 0, Vec3::UnitY()), cap);
   EXPECT_NEAR(crossed.Ri, r, 1e-14);
   EXPECT_NEAR(crossed.Rj, r, 1e-14);
-  EXPECT_NEAR(crossed.omega, std::numbers::pi / 2, 1e-14);
+  EXPECT_NEAR(crossed.omega(), std::numbers::pi / 2, 1e-14);
   const RelativeRadii parallel = relativeRadii(curvatures(1 / r, 0, Vec3::UnitX()),
                                                curvatures(1 / r, 0, -Vec3::UnitX()), cap);
   EXPECT_NEAR(parallel.Ri, r / 2, 1e-14);
   EXPECT_EQ(parallel.Rj, cap);
-  EXPECT_NEAR(parallel.omega, 0.0, 1e-14);
+  EXPECT_NEAR(parallel.omega(), 0.0, 1e-14);
 }
 
 TEST(Elliptic, ExactEccentricitySolvesEq13) {

@@ -52,7 +52,7 @@ json probe(const json& input) {
   out["directions_a"] = json::array({toJson(g.curvatureA.d1), toJson(g.curvatureA.d2)});
   out["directions_b"] = json::array({toJson(g.curvatureB.d1), toJson(g.curvatureB.d2)});
   const RelativeRadii radii = relativeRadii(g.curvatureA, g.curvatureB, capFactor * RvolRef);
-  out["omega"] = radii.omega;
+  out["omega"] = radii.omega();
   out["Ri"] = radii.Ri;
   out["Rj"] = radii.Rj;
   out["Rc"] = radii.Rc;

@@ -50,7 +50,7 @@ int validateTable1(const Arguments& args) {
     const double R = r.volumeEquivalentRadius;
     std::printf("%-5d %-10.3e %-10.5f %-10.5f %-12.4f %-10.5f %-10.5f %-10.5f %-6d %.4f\n", c.id,
                 r.contact.overlap / R, r.radii.Ri / R, r.radii.Rj / R,
-                r.radii.omega * 180.0 / std::numbers::pi, r.radii.Rc / R, r.explicitFactors.gamma,
+                r.radii.omega() * 180.0 / std::numbers::pi, r.radii.Rc / R, r.explicitFactors.gamma,
                 r.exactFactors.gamma, r.contact.iterations, r.normalisedForceExact);
   }
   std::printf("\n%s: sqdem within %.1f %% of the review's accurate model in all cases\n",

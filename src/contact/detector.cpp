@@ -141,11 +141,13 @@ SupportPair minimiseSupportGap(const PairFrame& f, const Vec3& startNormal,
 /// does not square J's condition number (large where the relative curvature nearly vanishes,
 /// as in flat-on-flat contacts) and returns the minimum-norm-like basic step when J is singular.
 /// The undamped step of a well-conditioned J (the common case) uses the cheaper partially
-/// pivoted LU, which gives the same solution.
+/// pivoted LU, which gives the same solution; "well-conditioned" is judged by the ratio of the
+/// smallest to the largest pivot (cheap; Eigen's rcond() estimate cost as much as the solve).
 Vec4 dampedStep(const Iterate& it, double damping) {
   if (damping == 0.0) {
     const Eigen::PartialPivLU<Mat4> lu(it.J);
-    if (lu.rcond() > 1e-6) return lu.solve(-it.r);
+    const Vec4 pivots = lu.matrixLU().diagonal().cwiseAbs();
+    if (pivots.minCoeff() > 1e-6 * pivots.maxCoeff()) return lu.solve(-it.r);
     return it.J.colPivHouseholderQr().solve(-it.r);
   }
   Eigen::Matrix<double, 8, 4> augmented;

@@ -7,7 +7,7 @@ namespace sqdem {
 SymmetricEigen2 symmetricEigen2(double s11, double s12, double s22) {
   const double mean = 0.5 * (s11 + s22);
   const double half = 0.5 * (s11 - s22);
-  const double radius = std::hypot(half, s12);
+  const double radius = std::sqrt(half * half + s12 * s12);  // curvatures: no overflow risk, cheaper than hypot
   SymmetricEigen2 e{mean + radius, mean - radius, Vec2::UnitX()};
   if (radius == 0.0) return e;  // umbilic: every direction is principal
   // Eigenvector of l1 from the better-conditioned of the two rows of (S - l1 I).

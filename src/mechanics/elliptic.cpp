@@ -78,7 +78,7 @@ RelativeRadii relativeRadii(const PrincipalCurvatures& A, const PrincipalCurvatu
   const double dA = A.k1 - A.k2, dB = B.k1 - B.k2;
   const double root = std::sqrt(std::max(0.0, dA * dA + dB * dB + 2.0 * dA * dB * cos2Omega));
   RelativeRadii r;
-  r.omega = std::acos(cosOmega);
+  r.cosOmega = cosOmega;
   r.Ri = capRadius(0.5 * (sum + root), radiusCap);
   r.Rj = capRadius(0.5 * (sum - root), radiusCap);
   r.Rc = r.Ri * r.Rj / (r.Ri + r.Rj);
@@ -100,7 +100,8 @@ Vec3 contactMajorAxis(const PrincipalCurvatures& A, const PrincipalCurvatures& B
   }
   // Eigenvector of the smaller eigenvalue s of [[m11, m12], [m12, m22]]: (m12, s - m11) or
   // (s - m22, m12), whichever is longer (a circle: any direction).
-  const double s = 0.5 * (m11 + m22) - std::hypot(0.5 * (m11 - m22), m12);
+  const double half = 0.5 * (m11 - m22);
+  const double s = 0.5 * (m11 + m22) - std::sqrt(half * half + m12 * m12);
   const double x1 = m12, y1 = s - m11, x2 = s - m22, y2 = m12;
   const bool first = x1 * x1 + y1 * y1 >= x2 * x2 + y2 * y2;
   const Vec3 u = first ? Vec3(x1 * t1 + y1 * t2) : Vec3(x2 * t1 + y2 * t2);

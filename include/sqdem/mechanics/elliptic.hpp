@@ -19,6 +19,8 @@
 // F = 4/3 E_e sqrt(R_e) delta^3/2 f2^-3/2 (Eq. 10). Valid while (B/A)^p < 2 (f >= 0),
 // i.e. B/A up to ~1e5 for f1.
 
+#include <cmath>
+
 #include "sqdem/geometry/curvature.hpp"
 
 namespace sqdem {
@@ -27,10 +29,11 @@ namespace sqdem {
 struct RelativeRadii {
   double Ri = 0.0;     ///< smaller relative radius (m)
   double Rj = 0.0;     ///< larger relative radius (m), Ri <= Rj
-  double omega = 0.0;  ///< angle between the k1 directions of the two surfaces (rad, [0, pi/2])
+  double cosOmega = 1.0;  ///< |cos| of the angle between the k1 directions of the two surfaces
   double Rc = 0.0;     ///< effective radius Ri Rj / (Ri + Rj) (m)
 
   double ratio() const { return Ri / Rj; }  ///< Ri/Rj in (0, 1]
+  double omega() const { return std::acos(cosOmega); }  ///< that angle (rad, [0, pi/2])
 };
 
 /// 004 Eqs. 3-5, 8 with every relative radius capped at radiusCap (m).
