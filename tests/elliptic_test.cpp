@@ -27,6 +27,11 @@ TEST(Elliptic, CircularLimit) {
   const HertzFactors h = hertzFactorsFromEccentricity(0.0);
   EXPECT_NEAR(h.gamma, std::numbers::sqrt2, 1e-15);
   EXPECT_NEAR(h.beta, 2.0, 1e-15);
+  const HertzFactors c = circularHertzFactors();  // the shortcut the engine uses for circles
+  EXPECT_NEAR(c.gamma, h.gamma, 1e-15);
+  EXPECT_NEAR(c.beta, h.beta, 1e-15);
+  EXPECT_NEAR(c.K, h.K, 1e-15);
+  EXPECT_NEAR(c.D, h.D, 1e-15);
   EXPECT_EQ(eccentricitySquaredExact(1.0), 0.0);
   EXPECT_NEAR(eccentricitySquaredTabulated(1.0), 0.0, 1e-12);
 }

@@ -33,7 +33,7 @@ HertzContact hertzContact(const ContactModel& model, const ContactGeometry& geom
                                                           (motion.volumeRadiusA + motion.volumeRadiusB)
                                                     : motion.volumeRadiusA;
     h.Rc = 0.5 * Rstar;
-    h.factors = hertzFactorsFromEccentricity(0.0);
+    h.factors = circularHertzFactors();
   }
   return h;
 }

@@ -20,6 +20,7 @@
 // i.e. B/A up to ~1e5 for f1.
 
 #include <cmath>
+#include <numbers>
 
 #include "sqdem/geometry/curvature.hpp"
 
@@ -62,6 +63,10 @@ struct HertzFactors {
   double D = 0.0;
 };
 HertzFactors hertzFactorsFromEccentricity(double e2);
+/// The circle's factors (e = 0): gamma = sqrt 2, beta = 2, K = pi/2, D = pi/4, without evaluating them.
+inline HertzFactors circularHertzFactors() {
+  return {0.0, std::numbers::sqrt2, 2.0, 0.5 * std::numbers::pi, 0.25 * std::numbers::pi};
+}
 HertzFactors hertzFactors(double ratio, EccentricityMethod method);
 
 /// Unit direction of the contact ellipse's major axis (the direction of the smaller relative
