@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 #include <omp.h>
 
+#include <cmath>
 #include <filesystem>
+#include <numbers>
 #include <fstream>
 #include <sstream>
 
@@ -243,6 +245,18 @@ TEST(Engine, BeckerKamlahBedSettles) {
   for (std::size_t i = 0; i < world.particles().size(); ++i) ASSERT_TRUE(world.particles().position[i].allFinite());
 }
 
+// An interaction's own restitution and friction replace the materials' pair values; the
+// damping ratio is 001 Eq. 12's zeta(e) = -ln e / sqrt(pi^2 + ln^2 e).
+TEST(Engine, InteractionOverridesPairRestitutionAndFriction) {
+  const World plain = buildWorld(loadScene(writeScene("plain", bedScene)));
+  EXPECT_DOUBLE_EQ(plain.contactModel(0, 0).friction, 0.4);
+  const World pair = buildWorld(loadScene(writeScene(
+      "pair", replaced(bedScene, "  - materials: [glass, glass]\n", "  - materials: [glass, glass]\n    restitution: 0.8\n    friction: 0.1\n"))));
+  EXPECT_DOUBLE_EQ(pair.contactModel(0, 0).friction, 0.1);
+  const double l = std::log(0.8);
+  EXPECT_NEAR(pair.contactModel(0, 0).dampingRatio, -l / std::sqrt(std::numbers::pi * std::numbers::pi + l * l), 1e-15);
+}
+
 TEST(Engine, SceneErrorsNameLineKeyAndWhatIsAllowed) {
   const auto withInteraction = [](const std::string& keys) {
     return replaced(bedScene, "  - materials: [glass, glass]\n", "  - materials: [glass, glass]\n" + keys);
@@ -273,6 +287,7 @@ TEST(Engine, SceneErrorsNameLineKeyAndWhatIsAllowed) {
   expectSceneError(withInteraction("    roughness: {sigma: 1.0e-6}\n"), "'interactions[0].roughness.asperity_count': missing");
   expectSceneError(withInteraction("    roughness: {sigma: 1.0e-6, asperity_count: 10}\n    surface_energy: 0.1\n"),
                    "Greenwood-Williamson roughness goes with the elastic normal laws, without surface_energy");
+  expectSceneError(withInteraction("    restitution: 0\n"), "'interactions[0].restitution': must be in (0, 1]");
   expectSceneError("seed: [1", "not valid YAML");
   // A roughness range beyond the skin, and a region too small for the particles, are reported
   // before anything runs.

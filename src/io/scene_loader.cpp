@@ -263,7 +263,7 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
     const YAML::Node in = interactions[k];
     const std::string where = "interactions[" + std::to_string(k) + "]";
     r.allowOnly(in, where, {"materials", "normal", "tangential", "eccentricity", "cap_factor", "reduced_stiffness", "surface_energy",
-                            "plastic_transition", "lambda_max", "epsilon_max", "rolling_hysteresis", "roughness"});
+                            "plastic_transition", "lambda_max", "epsilon_max", "rolling_hysteresis", "roughness", "restitution", "friction"});
     const YAML::Node pair = in["materials"];
     if (!pair || !pair.IsSequence() || pair.size() != 2) r.fail(pair ? pair : in, where + ".materials", "must be a pair [material, material]");
     InteractionSpec spec;
@@ -287,6 +287,13 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
                                  {{"tabulated", EccentricityMethod::Tabulated}, {"exact", EccentricityMethod::Exact},
                                   {"explicit", EccentricityMethod::Explicit}},
                                  EccentricityMethod::Tabulated);
+    // Pair values of the damping and friction: by default the smaller of the two materials'.
+    spec.restitution = r.number(in, "restitution", where, 0.0);
+    if (in["restitution"] && !(spec.restitution > 0.0 && spec.restitution <= 1.0)) {
+      r.fail(in["restitution"], where + ".restitution", "must be in (0, 1]");
+    }
+    spec.friction = r.number(in, "friction", where, -1.0);
+    if (in["friction"] && spec.friction < 0.0) r.fail(in["friction"], where + ".friction", "must be >= 0");
     spec.capFactor = r.number(in, "cap_factor", where, 10.0);
     if (!(spec.capFactor > 0.0)) r.fail(in["cap_factor"], where + ".cap_factor", "must be > 0");
     spec.stiffnessScale = r.number(in, "reduced_stiffness", where, 1.0);

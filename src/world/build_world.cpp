@@ -5,6 +5,8 @@
 #include <numbers>
 #include <random>
 
+#include "sqdem/mechanics/damping.hpp"
+
 namespace sqdem {
 namespace {
 
@@ -106,6 +108,8 @@ World buildWorld(const Scene& scene) {
     model.epsilonMax = in.epsilonMax;
     model.eccentricity = in.eccentricity;
     model.capFactor = in.capFactor;
+    if (in.restitution > 0.0) model.dampingRatio = restitutionDampingRatio(in.restitution);  // 0 for e = 1
+    if (in.friction >= 0.0) model.friction = in.friction;
     model.effectiveModulus *= in.stiffnessScale;
     model.effectiveShear *= in.stiffnessScale;
     model.surfaceEnergy = in.surfaceEnergy * std::pow(in.stiffnessScale, 0.4);  // 001 Eq. 24

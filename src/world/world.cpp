@@ -45,7 +45,7 @@ ContactModel World::defaultContactModel(std::uint32_t ma, std::uint32_t mb) cons
   m.friction = std::min(A.friction, B.friction);
   m.yieldStrength = std::min(A.yieldStrength, B.yieldStrength);
   const double e = std::min(A.restitution, B.restitution);
-  m.dampingRatio = e >= 1.0 ? 0.0 : restitutionDampingRatio(e);
+  m.dampingRatio = restitutionDampingRatio(e);  // 0 for e = 1
   return m;
 }
 

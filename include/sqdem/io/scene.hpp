@@ -44,6 +44,8 @@ struct InteractionSpec {
   TangentialLaw tangential = TangentialLaw::EllipticMindlin;
   EccentricityMethod eccentricity = EccentricityMethod::Tabulated;
   double capFactor = 10.0;
+  double restitution = 0.0;     ///< pair restitution e (0: min of the materials'), sets the damping
+  double friction = -1.0;       ///< pair friction mu (< 0: min of the materials')
   double stiffnessScale = 1.0;  ///< reduced-stiffness factor E_mod/E (001 Eq. 24)
   double surfaceEnergy = 0.0;   ///< gamma (J/m^2) of the real material; 0: no adhesion
   double roughnessSigma = 0.0, asperityCount = 0.0;  ///< Greenwood-Williamson sigma_s (m), N A_n (0: smooth)

@@ -90,6 +90,7 @@ class World {
 
   /// Sets the law of a material pair (symmetric); every pair must be set before the first step.
   void setContactModel(std::uint32_t materialA, std::uint32_t materialB, const ContactModel& model);
+  const ContactModel& contactModel(std::uint32_t materialA, std::uint32_t materialB) const { return model(materialA, materialB); }
   /// The default law from two materials: elliptic Hertz, pair friction/restitution.
   ContactModel defaultContactModel(std::uint32_t materialA, std::uint32_t materialB) const;
 
