@@ -66,6 +66,26 @@ TEST(RigidBody, FreeRotationFollowsEulersEquations) {
   EXPECT_LT((wBody - w).norm(), 1e-5 * w.norm());
 }
 
+// A free spinning sphere (isotropic inertia) turns uniformly about its constant angular
+// velocity: after t its orientation is the rotation by |w| t about w (closed form).
+TEST(RigidBody, FreeSphereRotatesUniformly) {
+  ParticleStore p;
+  p.add(0, 0, Vec3::Zero(), Quat(Eigen::AngleAxisd(0.3, Vec3::UnitY())), 1.0, Vec3::Constant(0.4));
+  const Vec3 w(1.0, -2.0, 0.5);
+  p.setAngularVelocity(0, w);
+  const double h = 1e-3;
+  const int steps = 10000;
+  for (int step = 0; step < steps; ++step) {
+    p.torque[0].setZero();
+    kick(p, 0, 0.5 * h);
+    drift(p, 0, h);
+    kick(p, 0, 0.5 * h);
+  }
+  const Quat expected = Quat(Eigen::AngleAxisd(w.norm() * h * steps, w.normalized())) * Quat(Eigen::AngleAxisd(0.3, Vec3::UnitY()));
+  EXPECT_LT(p.orientation[0].angularDistance(expected), 1e-10);
+  EXPECT_LT((p.angularVelocity[0] - w).norm(), 1e-12 * w.norm());
+}
+
 TEST(RigidBody, VelocityVerletIsExactForConstantForce) {
   ParticleStore p;
   p.add(0, 0, Vec3::Zero(), Quat::Identity(), 2.0, Vec3::Ones());

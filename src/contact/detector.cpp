@@ -209,6 +209,7 @@ ContactGeometry sphereSphere(const Superquadric& A, const Pose& poseA, const Sup
   g.pointB = poseB.position - rB * g.normal;
   g.localPointA = poseA.toBody(g.pointA);
   g.localPointB = poseB.toBody(g.pointB);
+  if (!settings.curvatures) return g;
   g.curvatureA = PrincipalCurvatures::flat(g.normal);
   g.curvatureA.k1 = g.curvatureA.k2 = 1.0 / rA;
   g.curvatureB = PrincipalCurvatures::flat(-g.normal);

@@ -37,10 +37,21 @@ void kick(ParticleStore& particles, std::size_t i, double halfStep) {
 
 void drift(ParticleStore& particles, std::size_t i, double step) {
   particles.position[i] += step * particles.velocity[i];
+  const Vec3& I = particles.inertia[i];
+  if (I.x() == I.y() && I.y() == I.z()) {
+    // Isotropic body (a sphere): the free rotor's exact flow is a uniform rotation about the
+    // constant world angular velocity; the body angular momentum does not change.
+    const Vec3 w = particles.angularVelocity[i];
+    const double rate = w.norm();
+    if (rate > 0.0) {
+      particles.orientation[i] = (Quat(Eigen::AngleAxisd(rate * step, w / rate)) * particles.orientation[i]).normalized();
+      particles.setAngularVelocity(i, w);
+    }
+    return;
+  }
   const Quat& orientation = particles.orientation[i];
   Vec4 q(orientation.w(), orientation.x(), orientation.y(), orientation.z());
   Vec4& p = particles.conjugateMomentum[i];
-  const Vec3& I = particles.inertia[i];
   freeRotation(3, 0.5 * step, I.z(), q, p);
   freeRotation(2, 0.5 * step, I.y(), q, p);
   freeRotation(1, step, I.x(), q, p);

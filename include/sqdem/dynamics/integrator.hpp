@@ -9,6 +9,8 @@
 //               H_k = (p · P_k q)^2 / (8 I_k), P_k q = q ⊗ e_k:
 //               zeta = t (p · P_k q) / (4 I_k); q <- cos zeta q + sin zeta P_k q,
 //               p <- cos zeta p + sin zeta P_k p                         (Miller Eqs. 2.14-2.16)
+//               (isotropic bodies, I1 = I2 = I3: the exact flow, a rotation by |w| h about
+//               the constant world angular velocity w)
 //   (forces at the new positions)
 //   kick(h/2)
 //
