@@ -13,6 +13,7 @@
 #include <numbers>
 #include <random>
 
+#include "median.hpp"
 #include "sqdem/world/neighbour_list.hpp"
 
 using namespace sqdem;
@@ -26,11 +27,6 @@ struct SceneKind {
   double solidFraction;   ///< of the occupied region
   double occupiedHeight;  ///< fraction of the box height holding the particles
 };
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
 
 }  // namespace
 

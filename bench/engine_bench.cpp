@@ -15,6 +15,7 @@
 #include <random>
 #include <string>
 
+#include "median.hpp"
 #include "sqdem/world/world.hpp"
 
 using namespace sqdem;
@@ -51,11 +52,6 @@ World denseBed(const Case& c, int edge, std::uint64_t seed) {
   }
   world.setTimeStep(0.2 * world.rayleighTimeStep());
   return world;
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
 }
 
 }  // namespace
