@@ -306,6 +306,33 @@ TEST(World, RoughSphereRestsOnItsAsperities) {
   EXPECT_NEAR(world.walls()[0].force.z(), -weight, 1e-4 * weight);
 }
 
+// A rough contact is found where it starts to act: two rough spheres approaching from far
+// apart feel the first asperity force at a gap of 4 sigma (within one step's approach), although
+// the neighbour list is rebuilt only every half skin of motion (the candidates' reach includes
+// the law's range).
+TEST(World, RoughContactStartsAtItsRange) {
+  omp_set_num_threads(1);
+  const double R = 1e-3, sigma = 1e-6, v = 0.01, dt = 1e-6;
+  World world({Superquadric::sphere(R)}, {Material{1e8, 0.3, 2500.0, 0.0, 1.0}}, bigBox(), 10e-6);
+  ContactModel law = world.defaultContactModel(0, 0);
+  law.roughnessSigma = sigma;
+  law.asperityCount = 100.0;
+  world.setContactModel(0, 0, law);
+  world.addParticle(0, 0, Vec3(-R - 30.3e-6, 0.0, 0.0), Quat::Identity());  // a rebuild falls at a gap just over the skin
+  world.addParticle(0, 0, Vec3(R + 30.3e-6, 0.0, 0.0), Quat::Identity());
+  world.particles().velocity[0] = Vec3(v, 0.0, 0.0);
+  world.particles().velocity[1] = Vec3(-v, 0.0, 0.0);
+  world.setTimeStep(dt);
+  double firstGap = -1.0;
+  for (int step = 0; step < 10000 && firstGap < 0.0; ++step) {
+    world.step();
+    if (!world.contacts().empty()) firstGap = world.particles().position[1].x() - world.particles().position[0].x() - 2.0 * R;
+  }
+  EXPECT_GT(world.neighbourList().builds(), 5);  // the list was rebuilt on the way in
+  EXPECT_LE(firstGap, 4.0 * sigma);
+  EXPECT_GT(firstGap, 4.0 * sigma - 2.0 * v * dt * 1.01);
+}
+
 // The slab volume of a tilted ellipsoid (packing_measures.hpp) against a grid count of the
 // points inside it: whole body V, and a slab through it within the grid's resolution.
 TEST(PackingMeasures, EllipsoidVolumeInSlabMatchesPointCount) {

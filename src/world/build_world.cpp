@@ -116,7 +116,7 @@ World buildWorld(const Scene& scene) {
     model.rollingHysteresis = in.rollingHysteresis;
     model.roughnessSigma = in.roughnessSigma;
     model.asperityCount = in.asperityCount;
-    if (model.range() > world.neighbourList().skin()) {
+    if (model.range() > world.neighbourList().skin()) {  // the detector solves gaps up to the skin
       throw SceneError(scene.path + ": interactions: roughness sigma = " + std::to_string(in.roughnessSigma) +
                        " m acts up to a gap of 4 sigma, beyond the skin " + std::to_string(world.neighbourList().skin()) +
                        " m: raise 'skin' to at least 4 sigma");

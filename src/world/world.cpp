@@ -77,7 +77,7 @@ void World::detect(Contact& c) const {
     c.separation -= dt_ * (p.velocity[c.a].norm() + p.velocity[c.b].norm() +
                            p.angularVelocity[c.a].norm() * boundingRadius_[c.a] +
                            p.angularVelocity[c.b].norm() * boundingRadius_[c.b]);
-    if (c.separation > 0.0) {
+    if (c.separation > lawOf(c).range()) {  // rough contacts act from a gap of range() on
       c.geometry = ContactGeometry{};  // status Separated, no iterations
       return;
     }
@@ -123,14 +123,14 @@ void World::buildCandidates() {
   const ParticleStore& p = particles_;
   std::vector<Contact> next;
   next.reserve(neighbours_.pairs().size() + pairs_.size());
-  const double skin = neighbours_.skin();
+  const double skin = neighbours_.skin(), range = largestRange();
   auto pair = neighbours_.pairs().begin();
   const auto pairsEnd = neighbours_.pairs().end();
   for (std::uint32_t i = 0; i < p.size(); ++i) {
     for (; pair != pairsEnd && pair->a == i; ++pair) next.push_back(candidate(i, pair->b, pair->shift));
     for (std::uint32_t w = 0; w < walls_.size(); ++w) {
       const Plane& plane = walls_[w].plane;
-      if ((p.position[i] - plane.point).dot(plane.normal) < boundingRadius_[i] + skin) {
+      if ((p.position[i] - plane.point).dot(plane.normal) < boundingRadius_[i] + range + skin) {
         next.push_back(candidate(i, wallFlag | w));
       }
     }
@@ -150,6 +150,12 @@ void World::buildCandidates() {
   for (const Wall& w : walls_) wallReference_.push_back(w.plane.point);
 }
 
+double World::largestRange() const {
+  double range = 0.0;
+  for (const ContactModel& m : models_) range = std::max(range, m.range());
+  return range;
+}
+
 bool World::wallsMovedHalfSkin() const {
   if (wallReference_.size() != walls_.size()) return true;
   const double limit = 0.25 * neighbours_.skin() * neighbours_.skin();
@@ -167,7 +173,15 @@ void World::computeForces() {
   ParticleStore& p = particles_;
   if (neighbours_.needsRebuild(p) || wallsMovedHalfSkin()) {
     if (reorderInterval_ > 0 && neighbours_.builds() % reorderInterval_ == 0) reorderAlongHilbertCurve();
-    neighbours_.rebuild(p, boundingRadius_);
+    // Laws acting across a gap (roughness) widen every candidate's reach by their range.
+    const double range = largestRange();
+    if (range > 0.0) {
+      std::vector<double> reach(boundingRadius_);
+      for (double& r : reach) r += 0.5 * range;
+      neighbours_.rebuild(p, reach);
+    } else {
+      neighbours_.rebuild(p, boundingRadius_);
+    }
     buildCandidates();
   }
 

@@ -164,6 +164,7 @@ class World {
   /// than half the skin), so steps in between copy no contact records.
   void buildCandidates();
   bool wallsMovedHalfSkin() const;
+  double largestRange() const;  ///< the largest gap any law acts across (m)
   void detect(Contact& c) const;    ///< narrow phase, warm-started from c.geometry
   void applyLaw(Contact& c) const;  ///< force of a touching contact, updates its history
 
