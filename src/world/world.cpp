@@ -146,8 +146,25 @@ void World::buildCandidates() {
     }
   }
   pairs_ = std::move(next);
+  indexInvolvement();
   wallReference_.clear();
   for (const Wall& w : walls_) wallReference_.push_back(w.plane.point);
+}
+
+void World::indexInvolvement() {
+  // Counting sort of the contacts by particle, in key order within each particle.
+  involvementStart_.assign(particles_.size() + 1, 0);
+  for (const Contact& c : pairs_) {
+    ++involvementStart_[c.a + 1];
+    if (!c.onWall()) ++involvementStart_[c.b + 1];
+  }
+  for (std::size_t i = 1; i < involvementStart_.size(); ++i) involvementStart_[i] += involvementStart_[i - 1];
+  involvement_.resize(involvementStart_.back());
+  std::vector<std::uint32_t> fill(involvementStart_.begin(), involvementStart_.end() - 1);
+  for (std::uint32_t k = 0; k < pairs_.size(); ++k) {
+    involvement_[fill[pairs_[k].a]++] = k;
+    if (!pairs_[k].onWall()) involvement_[fill[pairs_[k].b]++] = k;
+  }
 }
 
 double World::largestRange() const {
@@ -197,37 +214,51 @@ void World::computeForces() {
   const auto reduction = Clock::now();
   timing_.law += seconds(reduction - lawStart);
 
-  // Serial reduction in key order: independent of the thread count.
-  for (std::size_t i = 0; i < p.size(); ++i) {
+  // Reduction. Each particle sums its contacts in their key order (the order of a serial sweep
+  // over the key-ordered list), so the result does not depend on the thread count.
+  long long calls = 0, iterations = 0, failures = 0, deep = 0;
+  acting_.resize(pairs_.size());
+#pragma omp parallel for schedule(static) reduction(+ : calls, iterations, failures, deep)
+  for (std::ptrdiff_t k = 0; k < count; ++k) {
+    Contact& c = pairs_[k];
+    const ContactGeometry& g = c.geometry;
+    if (!c.onWall()) {
+      ++calls;
+      iterations += g.iterations;
+    }
+    if (g.status != ContactStatus::Converged && g.status != ContactStatus::Separated) ++failures;
+    if (!g.converged() && c.separation <= 0.0) c = candidate(c.a, c.b, c.shift);  // nothing to warm-start or cull
+    acting_[k] = interacting(c);  // else a gap, kept as the next step's warm start or cull
+    if (acting_[k] && g.overlap > 0.5 * shapes_[p.shape[c.a]].volumeEquivalentRadius()) ++deep;
+  }
+  statistics_.detectorCalls += calls;
+  statistics_.detectorIterations += iterations;
+  statistics_.detectorFailures += failures;
+  statistics_.deepOverlaps += deep;
+  const auto n = static_cast<std::ptrdiff_t>(p.size());
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t i = 0; i < n; ++i) {
     p.force[i] = p.mass[i] * (gravity_ - viscousDamping_ * p.velocity[i]);
     p.torque[i].setZero();
+    for (std::uint32_t m = involvementStart_[i]; m < involvementStart_[i + 1]; ++m) {
+      const Contact& c = pairs_[involvement_[m]];
+      if (!acting_[involvement_[m]]) continue;
+      const Vec3 point = 0.5 * (c.geometry.pointA + c.geometry.pointB);
+      const Vec3& F = c.force.onB;
+      if (c.a == static_cast<std::uint32_t>(i)) {
+        p.force[i] -= F;
+        p.torque[i] -= (point - p.position[i]).cross(F) + c.force.momentOnB;
+      } else {
+        p.force[i] += F;
+        p.torque[i] += (point - (p.position[i] + c.shift)).cross(F) + c.force.momentOnB;
+      }
+    }
   }
   for (Wall& w : walls_) w.force.setZero();
   interacting_.clear();
   for (std::uint32_t k = 0; k < pairs_.size(); ++k) {
-    Contact& c = pairs_[k];
-    const ContactGeometry& g = c.geometry;
-    if (!c.onWall()) {
-      ++statistics_.detectorCalls;
-      statistics_.detectorIterations += g.iterations;
-    }
-    if (g.status != ContactStatus::Converged && g.status != ContactStatus::Separated) ++statistics_.detectorFailures;
-    if (!g.converged() && c.separation <= 0.0) {  // nothing to warm-start or cull from next step
-      c = candidate(c.a, c.b, c.shift);
-      continue;
-    }
-    if (!interacting(c)) continue;  // a gap: kept as the next step's warm start or cull
-    if (g.overlap > 0.5 * shapes_[p.shape[c.a]].volumeEquivalentRadius()) ++statistics_.deepOverlaps;
-    const Vec3 point = 0.5 * (g.pointA + g.pointB);
-    const Vec3& F = c.force.onB;
-    p.force[c.a] -= F;
-    p.torque[c.a] -= (point - p.position[c.a]).cross(F) + c.force.momentOnB;
-    if (c.onWall()) {
-      walls_[c.b & ~wallFlag].force += F;
-    } else {
-      p.force[c.b] += F;
-      p.torque[c.b] += (point - (p.position[c.b] + c.shift)).cross(F) + c.force.momentOnB;
-    }
+    if (!acting_[k]) continue;
+    if (pairs_[k].onWall()) walls_[pairs_[k].b & ~wallFlag].force += pairs_[k].force.onB;
     interacting_.push_back(k);
   }
   forcesCurrent_ = true;

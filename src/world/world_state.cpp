@@ -102,6 +102,10 @@ void World::readState(std::istream& in) {
   get(in, dt_);
   get(in, time_);
   get(in, forcesCurrent_);
+  for (const Contact& c : pairs_) {
+    if (c.a >= n || (c.onWall() ? (c.b & ~wallFlag) >= walls : c.b >= n)) throw std::runtime_error("checkpoint is corrupt (contact index)");
+  }
+  indexInvolvement();
 }
 
 }  // namespace sqdem

@@ -165,6 +165,8 @@ class World {
   void buildCandidates();
   bool wallsMovedHalfSkin() const;
   double largestRange() const;  ///< the largest gap any law acts across (m)
+  /// Per particle, the indices of its contacts in key order (for the parallel reduction).
+  void indexInvolvement();
   void detect(Contact& c) const;    ///< narrow phase, warm-started from c.geometry
   void applyLaw(Contact& c) const;  ///< force of a touching contact, updates its history
 
@@ -179,6 +181,9 @@ class World {
   std::vector<Wall> walls_;
   std::vector<Vec3> wallReference_;       ///< wall points at the last candidate build
   std::vector<Contact> pairs_;            ///< every candidate of the current neighbour list, key order
+  std::vector<std::uint8_t> acting_;               ///< per contact of pairs_: carries force this step
+  std::vector<std::uint32_t> involvementStart_;    ///< particle i's contacts: involvement_[start[i], start[i+1])
+  std::vector<std::uint32_t> involvement_;
   std::vector<std::uint32_t> interacting_;  ///< indices of the force-carrying ones in pairs_
   WorldStatistics statistics_;
   StepTiming timing_;
