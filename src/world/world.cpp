@@ -209,18 +209,13 @@ void World::computeForces() {
   for (std::ptrdiff_t k = 0; k < count; ++k) detect(pairs_[k]);
   const auto lawStart = Clock::now();
   timing_.detection += seconds(lawStart - detected);
-#pragma omp parallel for schedule(dynamic, 64)
-  for (std::ptrdiff_t k = 0; k < count; ++k) applyLaw(pairs_[k]);
-  const auto reduction = Clock::now();
-  timing_.law += seconds(reduction - lawStart);
-
-  // Reduction. Each particle sums its contacts in their key order (the order of a serial sweep
-  // over the key-ordered list), so the result does not depend on the thread count.
+  // Laws, and per contact the step's statistics and whether it carries force.
   long long calls = 0, iterations = 0, failures = 0, deep = 0;
   acting_.resize(pairs_.size());
-#pragma omp parallel for schedule(static) reduction(+ : calls, iterations, failures, deep)
+#pragma omp parallel for schedule(dynamic, 64) reduction(+ : calls, iterations, failures, deep)
   for (std::ptrdiff_t k = 0; k < count; ++k) {
     Contact& c = pairs_[k];
+    applyLaw(c);
     const ContactGeometry& g = c.geometry;
     if (!c.onWall()) {
       ++calls;
@@ -235,6 +230,11 @@ void World::computeForces() {
   statistics_.detectorIterations += iterations;
   statistics_.detectorFailures += failures;
   statistics_.deepOverlaps += deep;
+  const auto reduction = Clock::now();
+  timing_.law += seconds(reduction - lawStart);
+
+  // Reduction. Each particle sums its contacts in their key order (the order of a serial sweep
+  // over the key-ordered list), so the result does not depend on the thread count.
   const auto n = static_cast<std::ptrdiff_t>(p.size());
 #pragma omp parallel for schedule(static)
   for (std::ptrdiff_t i = 0; i < n; ++i) {
