@@ -161,9 +161,10 @@ void World::indexInvolvement() {
   for (std::size_t i = 1; i < involvementStart_.size(); ++i) involvementStart_[i] += involvementStart_[i - 1];
   involvement_.resize(involvementStart_.back());
   std::vector<std::uint32_t> fill(involvementStart_.begin(), involvementStart_.end() - 1);
+  if (pairs_.size() >= bodyBFlag) throw std::length_error("World: more than 2^31 candidate contacts");
   for (std::uint32_t k = 0; k < pairs_.size(); ++k) {
     involvement_[fill[pairs_[k].a]++] = k;
-    if (!pairs_[k].onWall()) involvement_[fill[pairs_[k].b]++] = k;
+    if (!pairs_[k].onWall()) involvement_[fill[pairs_[k].b]++] = k | bodyBFlag;
   }
 }
 
@@ -212,6 +213,7 @@ void World::computeForces() {
   // Laws, and per contact the step's statistics and whether it carries force.
   long long calls = 0, iterations = 0, failures = 0, deep = 0;
   acting_.resize(pairs_.size());
+  loads_.resize(pairs_.size());
 #pragma omp parallel for schedule(dynamic, 64) reduction(+ : calls, iterations, failures, deep)
   for (std::ptrdiff_t k = 0; k < count; ++k) {
     Contact& c = pairs_[k];
@@ -224,7 +226,9 @@ void World::computeForces() {
     if (g.status != ContactStatus::Converged && g.status != ContactStatus::Separated) ++failures;
     if (!g.converged() && c.separation <= 0.0) c = candidate(c.a, c.b, c.shift);  // nothing to warm-start or cull
     acting_[k] = interacting(c);  // else a gap, kept as the next step's warm start or cull
-    if (acting_[k] && g.overlap > 0.5 * shapes_[p.shape[c.a]].volumeEquivalentRadius()) ++deep;
+    if (!acting_[k]) continue;
+    if (g.overlap > 0.5 * shapes_[p.shape[c.a]].volumeEquivalentRadius()) ++deep;
+    loads_[k] = {c.force.onB, 0.5 * (g.pointA + g.pointB), c.force.momentOnB, c.shift};
   }
   statistics_.detectorCalls += calls;
   statistics_.detectorIterations += iterations;
@@ -241,16 +245,15 @@ void World::computeForces() {
     p.force[i] = p.mass[i] * (gravity_ - viscousDamping_ * p.velocity[i]);
     p.torque[i].setZero();
     for (std::uint32_t m = involvementStart_[i]; m < involvementStart_[i + 1]; ++m) {
-      const Contact& c = pairs_[involvement_[m]];
-      if (!acting_[involvement_[m]]) continue;
-      const Vec3 point = 0.5 * (c.geometry.pointA + c.geometry.pointB);
-      const Vec3& F = c.force.onB;
-      if (c.a == static_cast<std::uint32_t>(i)) {
-        p.force[i] -= F;
-        p.torque[i] -= (point - p.position[i]).cross(F) + c.force.momentOnB;
+      const std::uint32_t k = involvement_[m] & ~bodyBFlag;
+      if (!acting_[k]) continue;
+      const ContactLoad& load = loads_[k];
+      if ((involvement_[m] & bodyBFlag) == 0) {  // i is body A
+        p.force[i] -= load.force;
+        p.torque[i] -= (load.point - p.position[i]).cross(load.force) + load.moment;
       } else {
-        p.force[i] += F;
-        p.torque[i] += (point - (p.position[i] + c.shift)).cross(F) + c.force.momentOnB;
+        p.force[i] += load.force;
+        p.torque[i] += (load.point - (p.position[i] + load.shift)).cross(load.force) + load.moment;
       }
     }
   }
@@ -258,7 +261,7 @@ void World::computeForces() {
   interacting_.clear();
   for (std::uint32_t k = 0; k < pairs_.size(); ++k) {
     if (!acting_[k]) continue;
-    if (pairs_[k].onWall()) walls_[pairs_[k].b & ~wallFlag].force += pairs_[k].force.onB;
+    if (pairs_[k].onWall()) walls_[pairs_[k].b & ~wallFlag].force += loads_[k].force;
     interacting_.push_back(k);
   }
   forcesCurrent_ = true;

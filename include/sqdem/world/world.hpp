@@ -181,9 +181,16 @@ class World {
   std::vector<Wall> walls_;
   std::vector<Vec3> wallReference_;       ///< wall points at the last candidate build
   std::vector<Contact> pairs_;            ///< every candidate of the current neighbour list, key order
+  /// What the reduction needs of a force-carrying contact, packed densely (the full records
+  /// are ~440 bytes): force on B, contact point, moment on B, B's periodic shift.
+  struct ContactLoad {
+    Vec3 force, point, moment, shift;
+  };
+  static constexpr std::uint32_t bodyBFlag = 0x80000000u;  ///< in involvement_: the particle is body B
   std::vector<std::uint8_t> acting_;               ///< per contact of pairs_: carries force this step
+  std::vector<ContactLoad> loads_;                 ///< per contact of pairs_, valid where acting_
   std::vector<std::uint32_t> involvementStart_;    ///< particle i's contacts: involvement_[start[i], start[i+1])
-  std::vector<std::uint32_t> involvement_;
+  std::vector<std::uint32_t> involvement_;         ///< contact index, | bodyBFlag where i is body B
   std::vector<std::uint32_t> interacting_;  ///< indices of the force-carrying ones in pairs_
   WorldStatistics statistics_;
   StepTiming timing_;
