@@ -1,11 +1,12 @@
 #pragma once
 // The World: particles, shapes, materials, the interaction table, walls, the persistent contact
 // list and the time step loop (DESIGN.md §2):
-//   half kick, drift (and walls move) -> broad phase (neighbour list, rebuilt when needed)
-//   -> narrow phase (detector, warm-started from the contact's history) -> contact law
-//   -> forces reduced per particle in contact order -> half kick.
-// Contacts are computed in parallel (OpenMP) into their own records and reduced serially in a
-// fixed order, so results do not depend on the number of threads.
+//   half kick, drift (and walls move) -> broad phase (neighbour list and candidate contacts,
+//   rebuilt when particles or walls moved half the skin) -> narrow phase (detector, warm-started
+//   from the contact's history) -> contact law -> forces reduced per particle -> half kick.
+// Contacts are computed in parallel (OpenMP) into their own records; each particle then sums
+// its contacts in their key order (also in parallel), so results do not depend on the number
+// of threads.
 
 #include <cstdint>
 #include <iosfwd>
