@@ -92,11 +92,6 @@ void World::detect(Contact& c) const {
 }
 
 void World::applyLaw(Contact& c) const {
-  if (!interacting(c)) {
-    c.force = {};
-    c.history = {};  // separated: the history ends
-    return;
-  }
   const ParticleStore& p = particles_;
   const Vec3 point = 0.5 * (c.geometry.pointA + c.geometry.pointB);
   ContactKinematics motion;
@@ -153,6 +148,7 @@ void World::buildCandidates() {
 
 void World::indexInvolvement() {
   // Counting sort of the contacts by particle, in key order within each particle.
+  if (pairs_.size() >= bodyBFlag) throw std::length_error("World: more than 2^31 candidate contacts");
   involvementStart_.assign(particles_.size() + 1, 0);
   for (const Contact& c : pairs_) {
     ++involvementStart_[c.a + 1];
@@ -161,7 +157,6 @@ void World::indexInvolvement() {
   for (std::size_t i = 1; i < involvementStart_.size(); ++i) involvementStart_[i] += involvementStart_[i - 1];
   involvement_.resize(involvementStart_.back());
   std::vector<std::uint32_t> fill(involvementStart_.begin(), involvementStart_.end() - 1);
-  if (pairs_.size() >= bodyBFlag) throw std::length_error("World: more than 2^31 candidate contacts");
   for (std::uint32_t k = 0; k < pairs_.size(); ++k) {
     involvement_[fill[pairs_[k].a]++] = k;
     if (!pairs_[k].onWall()) involvement_[fill[pairs_[k].b]++] = k | bodyBFlag;
@@ -217,7 +212,13 @@ void World::computeForces() {
 #pragma omp parallel for schedule(dynamic, 64) reduction(+ : calls, iterations, failures, deep)
   for (std::ptrdiff_t k = 0; k < count; ++k) {
     Contact& c = pairs_[k];
-    applyLaw(c);
+    const bool acting = interacting(c);  // else a gap, kept as the next step's warm start or cull
+    if (acting) {
+      applyLaw(c);
+    } else {
+      c.force = {};
+      c.history = {};  // out of the law's range: the history ends
+    }
     const ContactGeometry& g = c.geometry;
     if (!c.onWall()) {
       ++calls;
@@ -225,8 +226,8 @@ void World::computeForces() {
     }
     if (g.status != ContactStatus::Converged && g.status != ContactStatus::Separated) ++failures;
     if (!g.converged() && c.separation <= 0.0) c = candidate(c.a, c.b, c.shift);  // nothing to warm-start or cull
-    acting_[k] = interacting(c);  // else a gap, kept as the next step's warm start or cull
-    if (!acting_[k]) continue;
+    acting_[k] = acting;
+    if (!acting) continue;
     if (g.overlap > 0.5 * shapes_[p.shape[c.a]].volumeEquivalentRadius()) ++deep;
     loads_[k] = {c.force.onB, 0.5 * (g.pointA + g.pointB), c.force.momentOnB, c.shift};
   }

@@ -169,7 +169,7 @@ class World {
   /// Per particle, the indices of its contacts in key order (for the parallel reduction).
   void indexInvolvement();
   void detect(Contact& c) const;    ///< narrow phase, warm-started from c.geometry
-  void applyLaw(Contact& c) const;  ///< force of a touching contact, updates its history
+  void applyLaw(Contact& c) const;  ///< force of a contact within its law's range, updates its history
 
   std::vector<Superquadric> shapes_;
   std::vector<Material> materials_;
