@@ -110,6 +110,8 @@ World buildWorld(const Scene& scene) {
     model.capFactor = in.capFactor;
     if (in.restitution > 0.0) model.dampingRatio = restitutionDampingRatio(in.restitution);  // 0 for e = 1
     if (in.friction >= 0.0) model.friction = in.friction;
+    model.realModulus = model.effectiveModulus;  // F_C, xi_crit of rolling use the real material
+    model.realSurfaceEnergy = in.surfaceEnergy;
     model.effectiveModulus *= in.stiffnessScale;
     model.effectiveShear *= in.stiffnessScale;
     model.surfaceEnergy = in.surfaceEnergy * std::pow(in.stiffnessScale, 0.4);  // 001 Eq. 24
@@ -121,8 +123,6 @@ World buildWorld(const Scene& scene) {
                        " m acts up to a gap of 4 sigma, beyond the skin " + std::to_string(world.neighbourList().skin()) +
                        " m: raise 'skin' to at least 4 sigma");
     }
-    model.realModulus = model.effectiveModulus / in.stiffnessScale;  // F_C, xi_crit of the real material
-    model.realSurfaceEnergy = in.surfaceEnergy;
     minScale = std::min(minScale, in.stiffnessScale);
     world.setContactModel(in.materialA, in.materialB, model);
   }
