@@ -352,5 +352,42 @@ TEST(PackingMeasures, EllipsoidVolumeInSlabMatchesPointCount) {
   EXPECT_NEAR(volumeInSlab(e, pose, lo, hi), counted, 0.01 * counted);
 }
 
+// Love-Weber stress (packing_measures.hpp) of a hand-built contact set, whole tensor. Two
+// frictionless spheres pressed along a generic direction n carry sigma = |F| |l| n n^T / V
+// (closed form, all six components non-zero); with friction and a sliding sphere the tangential
+// force adds shear, checked against sym(l (x) f) / V summed component by component.
+TEST(PackingMeasures, StressTensorOfAContactSetEqualsTheLoveWeberSum) {
+  for (const double friction : {0.0, 0.5}) {
+    const Material m{1e7, 0.3, 1000.0, friction, 1.0};
+    World world({Superquadric::ellipsoid(1e-3, 1e-3, 1e-3)}, {m}, bigBox(), 2e-4);
+    ContactModel law = world.defaultContactModel(0, 0);
+    law.normal = NormalLaw::VolumeSphereHertz;
+    world.setContactModel(0, 0, law);
+    const Vec3 n = Vec3(1.0, -2.0, 3.0).normalized(), lever = 1.9e-3 * n;
+    world.addParticle(0, 0, Vec3::Zero(), Quat::Identity());
+    world.addParticle(0, 0, lever, Quat::Identity());
+    world.setTimeStep(1e-7);
+    if (friction > 0.0) {  // slide B across A: the tangential spring builds up
+      world.particles().velocity[1] = 1.0 * n.cross(Vec3::UnitX()).normalized();
+      for (int k = 0; k < 200; ++k) world.step();
+    } else {
+      world.computeForces();
+    }
+    ASSERT_EQ(world.contacts().size(), 1u);
+    const Contact& c = world.contacts().front();
+    const Vec3 l = world.particles().position[1] - world.particles().position[0];
+    const Vec3 f = c.force.onB;
+    const PackingMeasures measures = measurePacking(world);
+    const double V = measures.stressVolume, scale = f.norm() * l.norm() / V;
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) {
+        const double expected = friction > 0.0 ? 0.5 * (l[i] * f[j] + l[j] * f[i]) / V : f.norm() * l.norm() * n[i] * n[j] / V;
+        EXPECT_NEAR(measures.stress(i, j), expected, 1e-12 * scale) << "component " << i << j << ", friction " << friction;
+      }
+    }
+    if (friction > 0.0) EXPECT_GT((f - f.dot(n) * n).norm(), 0.01 * f.norm());  // the shear is really there
+  }
+}
+
 }  // namespace
 }  // namespace sqdem

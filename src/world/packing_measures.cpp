@@ -70,7 +70,10 @@ PackingMeasures measurePacking(const World& world) {
                                    : Vec3(p.position[c.b] + c.shift - p.position[c.a]);
     m.stress += branch * c.force.onB.transpose();
   }
-  m.stress = 0.5 * (m.stress + m.stress.transpose()) / m.stressVolume;
+  // Symmetrised from a copy: assigning m.stress from an expression that reads its transpose
+  // aliases in Eigen (each off-diagonal would read its already-overwritten twin).
+  const Mat3 sum = m.stress;
+  m.stress = 0.5 * (sum + sum.transpose()) / m.stressVolume;
 
   const std::vector<int> z = coordinationNumbers(world);
   long total = 0, nonRattlerTotal = 0, nonRattlers = 0;
