@@ -26,7 +26,10 @@ StickingVelocities stickingVelocities(const StickingVelocityInput& in) {
   StickingVelocities v;
   v.Vs = std::sqrt(2.0 * law.separationWork() / m);
   v.Vy0 = std::sqrt(2.0 * law.yieldWork() / m);
-  v.Vy = std::sqrt(std::max(0.0, (fY * fY - f0 * f0) / (m * kEl)));
+  // Eq. 75 keeps its sign in Eq. 79: where f_y < f_0 the contact yields at jump-in and
+  // m V_y^2 / 2 = W_2 - W_1 < 0 is energy the impact need not supply (000 Fig. 9 shaded zone).
+  const double VySquared = (fY * fY - f0 * f0) / (m * kEl);
+  v.Vy = std::sqrt(std::max(0.0, VySquared));
   if (v.Vy >= v.Vs) {
     v.Vys = v.Vs;
     return v;
@@ -38,7 +41,7 @@ StickingVelocities stickingVelocities(const StickingVelocityInput& in) {
     const bool converged = std::abs(next - fMax) <= 1e-13 * next;
     fMax = next;
     if (converged) {
-      v.Vys = std::sqrt(v.Vy * v.Vy + (fMax * fMax - fY * fY) / (m * kP));            // Eq. 79
+      v.Vys = std::sqrt(VySquared + (fMax * fMax - fY * fY) / (m * kP));              // Eq. 79
       return v;
     }
   }
