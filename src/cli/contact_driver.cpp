@@ -1,4 +1,4 @@
-// `sqdem contact <file.json|-> [--out DIR]`: the single-contact driver. Drives one contact along
+// `sqdem contact <file.json|-> [--out DIR] [--allow-detector-failures]`: the single-contact driver. Drives one contact along
 // a prescribed normal (and optional tangential) displacement history for one or more "curves"
 // (a geometry + a normal law each) and writes, per curve, a CSV of displacement, overlap,
 // forces, contact area and regime, then a gnuplot script and its PNG. Input keys and units are
@@ -14,6 +14,10 @@
 #include <optional>
 #include <regex>
 #include <sstream>
+
+#include <spawn.h>
+#include <unistd.h>
+#include <sys/wait.h>
 
 #include "commands.hpp"
 #include "driven_law.hpp"
@@ -197,13 +201,48 @@ std::string csvNumber(double v) {
   return s.str();
 }
 
+/// The plot title: user text that goes into a gnuplot script, so only characters that gnuplot
+/// treats literally inside a single-quoted, noenhanced string (no quotes, backslash, backtick,
+/// '$', '@' or control characters), at most 200 bytes.
+std::string readTitle(const json& input, const std::string& fallback) {
+  if (!input.contains("title")) return fallback;
+  const json& t = input["title"];
+  const std::string title = t.is_string() ? t.get<std::string>() : std::string();
+  const bool safe = std::none_of(title.begin(), title.end(), [](char c) {
+    const auto u = static_cast<unsigned char>(c);
+    return u < 0x20 || u == 0x7f || std::string_view("'\"`\\$@").find(c) != std::string_view::npos;
+  });
+  if (!t.is_string() || title.empty() || title.size() > 200 || !safe) {
+    throw InputError("'title' must be a string of 1 to 200 characters without quotes, backslashes, backticks, "
+                     "'$', '@' or control characters");
+  }
+  return title;
+}
+
+/// Runs `gnuplot script` in `directory` without a shell (no user text is ever parsed as a
+/// command). Returns gnuplot's exit status, or -1 when gnuplot is not installed.
+int runGnuplot(const fs::path& directory, const std::string& script) {
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addchdir_np(&actions, directory.c_str());
+  std::string program = "gnuplot", argument = script;
+  char* argv[] = {program.data(), argument.data(), nullptr};
+  pid_t pid = 0;
+  const int spawned = posix_spawnp(&pid, "gnuplot", &actions, nullptr, argv, environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (spawned != 0) return -1;
+  int status = 0;
+  if (waitpid(pid, &status, 0) != pid) return 1;
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 1;
+}
+
 struct CurveResult {
   std::string label;
   std::string csv;
   double maxOverlap = 0.0, maxForce = 0.0, maxTangential = 0.0;
 };
 
-int runContact(const std::string& inputPath, const fs::path& outDir) {
+int runContact(const std::string& inputPath, const fs::path& outDir, bool allowDetectorFailures) {
   const json input = readJsonInput(inputPath);
   if (!input.is_object()) throw InputError("top level must be a JSON object");
   rejectUnknownKeys(input, {"name", "title", "material", "material_b", "path", "tangential", "curves", "plot"},
@@ -214,7 +253,10 @@ int runContact(const std::string& inputPath, const fs::path& outDir) {
     name = input["name"].get<std::string>();
   }
   const std::regex safe("[A-Za-z0-9_.-]+");
-  if (!std::regex_match(name, safe)) throw InputError("'name' may contain only letters, digits, '_', '.', '-'");
+  if (!std::regex_match(name, safe) || name.front() == '.' || name.front() == '-') {
+    throw InputError("'name' may contain only letters, digits, '_', '.', '-' and may not start with '.' or '-'");
+  }
+  const std::string title = readTitle(input, name);
   const ContactMaterials materials = readMaterials(input);
   if (!input.contains("curves") || !input["curves"].is_array() || input["curves"].empty()) {
     throw InputError("'curves' must be a non-empty array of {label, geometry, law}");
@@ -335,7 +377,7 @@ int runContact(const std::string& inputPath, const fs::path& outDir) {
      << "set terminal pngcairo size 1000,650 enhanced font ',11'\n"
      << "set output '" << name << ".png.tmp'\n"
      << "set datafile separator ','\nset key top left\nset grid\n"
-     << "set title '" << input.value("title", name) << "' noenhanced\n"
+     << "set title '" << title << "' noenhanced\n"
      << "set xlabel '" << xLabel << "' noenhanced\nset ylabel '" << yLabel << "' noenhanced\n"
      << "set xzeroaxis\nplot ";
   for (std::size_t i = 0; i < results.size(); ++i) {
@@ -347,14 +389,12 @@ int runContact(const std::string& inputPath, const fs::path& outDir) {
 
   summary["gnuplot_script"] = (outDir / (name + ".gp")).string();
   summary["plot"] = nullptr;
-  if (std::system("command -v gnuplot >/dev/null 2>&1") != 0) {
+  const int gnuplot = runGnuplot(outDir, name + ".gp");
+  if (gnuplot < 0) {
     std::cerr << "sqdem contact: warning: gnuplot not found (scripts/setup.sh installs gnuplot-nox); "
                  "CSV and script written, PNG skipped\n";
-  } else if (outDir.string().find('\'') != std::string::npos) {
-    std::cerr << "sqdem contact: warning: output directory contains a quote; PNG skipped\n";
   } else {
-    const std::string command = "cd '" + outDir.string() + "' && gnuplot '" + name + ".gp'";
-    if (std::system(command.c_str()) != 0) {
+    if (gnuplot != 0) {
       fs::remove(outDir / (name + ".png.tmp"));
       throw std::runtime_error("gnuplot failed on " + (outDir / (name + ".gp")).string());
     }
@@ -362,34 +402,47 @@ int runContact(const std::string& inputPath, const fs::path& outDir) {
     summary["plot"] = (outDir / (name + ".png")).string();
   }
   std::cout << summary.dump(2) << "\n";
+  int failures = 0;
+  for (const Curve& c : curves) failures += c.geometry.detectorFailures();
+  if (failures > 0 && !allowDetectorFailures) {
+    std::cerr << "sqdem contact: " << failures << " step(s) the detector could not resolve (their overlap is the "
+                 "prescribed approach, see 'detector_failures'); the poses or the path may be outside the shapes' "
+                 "reach. --allow-detector-failures accepts such curves\n";
+    return 1;
+  }
   return 0;
 }
 
 }  // namespace
 
 int contactDriver(const Arguments& args) {
+  const char* usage = "usage: sqdem contact <file.json|-> [--out DIR] [--allow-detector-failures]\n";
   std::string input;
   fs::path outDir = ".";
+  bool outGiven = false, allowDetectorFailures = false;
   for (std::size_t i = 0; i < args.size(); ++i) {
     if (args[i] == "--out") {
-      if (i + 1 == args.size()) {
-        std::cerr << "sqdem contact: '--out' needs a directory\n";
+      if (i + 1 == args.size() || outGiven) {
+        std::cerr << "sqdem contact: '--out' needs one directory (given once)\n" << usage;
         return 2;
       }
       outDir = args[++i];
-    } else if (input.empty()) {
+      outGiven = true;
+    } else if (args[i] == "--allow-detector-failures") {
+      allowDetectorFailures = true;
+    } else if (input.empty() && (args[i] == "-" || args[i].rfind("--", 0) != 0)) {
       input = args[i];
     } else {
-      std::cerr << "sqdem contact: unexpected argument '" << args[i] << "'\nusage: sqdem contact <file.json|-> [--out DIR]\n";
+      std::cerr << "sqdem contact: unexpected argument '" << args[i] << "'\n" << usage;
       return 2;
     }
   }
   if (input.empty()) {
-    std::cerr << "usage: sqdem contact <file.json|-> [--out DIR]\n";
+    std::cerr << usage;
     return 2;
   }
   try {
-    return runContact(input, outDir);
+    return runContact(input, outDir, allowDetectorFailures);
   } catch (const InputError& e) {
     std::cerr << "sqdem contact: " << (input == "-" ? "<stdin>" : input) << ": " << e.what() << "\n";
     return 1;

@@ -1,0 +1,42 @@
+# `sqdem contact` never lets user text reach a script, a shell or a path: hostile titles are
+# refused with one message naming 'title' and nothing is written; a plain title is written as is.
+. "$(dirname "$0")/lib.sh"
+out="$scratch/out"
+marker="$scratch/PWNED"
+base='"material": {"youngs_modulus": 1e9, "poisson_ratio": 0.3}, "path": {"points": [0, 1e-8, 0]},
+  "curves": [{"label": "c", "geometry": {"radii": [1e-6, 1e-6]}, "law": {"type": "hertz"}}]'
+
+hostile=(
+  "x'\\nsystem('touch $marker')\\nset title 'y"
+  "a\\\"b"
+  "back\\\\slash"
+  "system('touch $marker')"
+  "\`touch $marker\`"
+  "\$(touch $marker)"
+  "@macro"
+  "tab\\there"
+)
+for t in "${hostile[@]}"; do
+  printf '{"title": "%s", %s}' "$t" "$base" > "$scratch/hostile.json"
+  expect_error "title $t" 1 "'title' must be a string" "$sqdem" contact "$scratch/hostile.json" --out "$out"
+  check "nothing written for title $t" test ! -e "$out"
+  check "no command ran for title $t" test ! -e "$marker"
+done
+
+# Names and labels become file names: path separators, '..' and option-like names are refused.
+for n in "../escape" "a/b" ".hidden" "-o"; do
+  printf '{"name": "%s", %s}' "$n" "$base" > "$scratch/name.json"
+  expect_error "name $n" 1 "'name' may contain only" "$sqdem" contact "$scratch/name.json" --out "$out"
+done
+printf '{%s}' "$(printf '%s' "$base" | sed 's/"label": "c"/"label": "..\/c"/')" > "$scratch/label.json"
+expect_error "label ../c" 1 "'label' must be a string of letters" "$sqdem" contact "$scratch/label.json" --out "$out"
+check "nothing written for bad names" test ! -e "$out"
+
+# An output directory with a quote and a space works (no shell parses it), and a plain title
+# with punctuation reaches the script verbatim.
+printf '{"name": "ok", "title": "Hertz (R = 1 um), 5%% / 10%%: ok!", %s}' "$base" > "$scratch/ok.json"
+weird="$scratch/it's a dir"
+check "plain title runs" "$sqdem" contact "$scratch/ok.json" --out "$weird"
+check "title verbatim in the script" grep -qF "set title 'Hertz (R = 1 um), 5% / 10%: ok!' noenhanced" "$weird/ok.gp"
+if command -v gnuplot >/dev/null; then check "PNG written" test -s "$weird/ok.png"; fi
+finish
