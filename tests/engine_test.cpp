@@ -12,6 +12,7 @@
 
 #include "sqdem/io/scene.hpp"
 #include "sqdem/world/build_world.hpp"
+#include "sqdem/world/checkpoint_file.hpp"
 #include "sqdem/world/packing_measures.hpp"
 
 namespace sqdem {
@@ -126,7 +127,9 @@ TEST(Engine, CheckpointRestartContinuesBitwise) {
   for (int s = 0; s < 5000; ++s) original.step();
 
   World resumed = buildWorld(scene);  // same scene: same shapes and laws, fresh state
-  resumed.readState(checkpoint);
+  const std::string payload = checkpoint.str();
+  CheckpointReader reader(payload);
+  resumed.readState(reader);
   for (int s = 0; s < 5000; ++s) resumed.step();
   ASSERT_GT(original.contacts().size(), 20u);
   ASSERT_EQ(resumed.time(), original.time());
@@ -136,8 +139,8 @@ TEST(Engine, CheckpointRestartContinuesBitwise) {
       ASSERT_EQ(resumed.particles().velocity[i](d), original.particles().velocity[i](d)) << "particle " << i;
     }
   }
-  std::stringstream garbage("not a checkpoint");
-  EXPECT_THROW(resumed.readState(garbage), std::runtime_error);
+  CheckpointReader garbage("not a checkpoint");
+  EXPECT_THROW(resumed.readState(garbage), CheckpointError);
 }
 
 // Force control: a servo-controlled lid holds its target pressure on a settled bed, and the

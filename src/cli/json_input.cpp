@@ -1,6 +1,7 @@
 #include "json_input.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -12,14 +13,20 @@ json readJsonInput(const std::string& path) {
   if (path == "-") {
     text << std::cin.rdbuf();
   } else {
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(path, error)) {
+      throw InputError(std::filesystem::is_directory(path, error) ? "is a directory, not a JSON file" : "cannot open the file");
+    }
     std::ifstream file(path);
-    if (!file) throw InputError("cannot open '" + path + "'");
+    if (!file) throw InputError("cannot open the file");
     text << file.rdbuf();
   }
   try {
     return json::parse(text.str());
   } catch (const json::parse_error& e) {
-    throw InputError("'" + path + "' is not valid JSON: " + e.what());
+    throw InputError("not valid JSON: " + std::string(e.what()));
+  } catch (const json::out_of_range& e) {  // e.g. 1e400: a number beyond double
+    throw InputError("not valid JSON (a number out of range): " + std::string(e.what()));
   }
 }
 

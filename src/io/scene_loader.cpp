@@ -3,8 +3,10 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <regex>
 #include <optional>
 #include <sstream>
 
@@ -36,8 +38,19 @@ class Reader {
     throw SceneError(s.str());
   }
 
-  void allowOnly(const YAML::Node& map, const std::string& where, std::initializer_list<const char*> keys) const {
+  /// A mapping whose keys are all different (YAML parsers keep the first of two equal keys).
+  void uniqueKeys(const YAML::Node& map, const std::string& where) const {
     if (!map.IsMap()) fail(map, where, "must be a mapping");
+    std::vector<std::string> seen;
+    for (const auto& entry : map) {
+      const std::string key = entry.first.IsScalar() ? entry.first.as<std::string>() : "";
+      if (std::find(seen.begin(), seen.end(), key) != seen.end()) fail(entry.first, keyPath(where, key), "given twice");
+      seen.push_back(key);
+    }
+  }
+
+  void allowOnly(const YAML::Node& map, const std::string& where, std::initializer_list<const char*> keys) const {
+    uniqueKeys(map, where);
     for (const auto& entry : map) {
       const std::string key = entry.first.as<std::string>();
       bool known = false;
@@ -94,6 +107,7 @@ class Reader {
   std::array<double, 2> range(const YAML::Node& v, const std::string& key) const {
     if (v.IsScalar()) {
       const double x = asNumber(v, key);
+      if (!(x > 0.0)) fail(v, key, "must be > 0");
       return {x, x};
     }
     if (!v.IsSequence() || v.size() != 2) fail(v, key, "must be a number or a range [min, max]");
@@ -227,12 +241,14 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
 
   const YAML::Node materials = root["materials"];
   if (!materials || !materials.IsMap() || materials.size() == 0) r.fail(materials ? materials : root, "materials", "missing (a mapping name -> properties)");
+  r.uniqueKeys(materials, "materials");
   for (const auto& m : materials) {
     const std::string name = m.first.as<std::string>();
     scene.materials.push_back({name, readMaterial(r, m.second, "materials." + name)});
   }
   const YAML::Node shapes = root["shapes"];
   if (!shapes || !shapes.IsMap() || shapes.size() == 0) r.fail(shapes ? shapes : root, "shapes", "missing (a mapping name -> shape)");
+  r.uniqueKeys(shapes, "shapes");
   for (const auto& s : shapes) {
     const std::string name = s.first.as<std::string>();
     const YAML::Node file = s.second["file"];
@@ -390,6 +406,12 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
     spec.lo = r.vector(region, "lo", where + ".region");
     spec.hi = r.vector(region, "hi", where + ".region");
     if (!((spec.hi - spec.lo).minCoeff() > 0.0)) r.fail(region, where + ".region", "needs hi > lo");
+    for (int d = 0; d < 3; ++d) {
+      if (!scene.domain.periodic[d] && (spec.lo(d) < scene.domain.lo(d) || spec.hi(d) > scene.domain.hi(d))) {
+        r.fail(region, where + ".region", std::string("reaches outside the domain along ") + "xyz"[d] +
+                                              " (the region holds particle centres and must lie within domain.lo, domain.hi)");
+      }
+    }
     spec.randomOrientation = r.flag(in, "random_orientation", where, true);
     scene.insertions.push_back(spec);
   }
@@ -402,6 +424,14 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
     r.allowOnly(st, where, {"name", "duration", "stop", "move_wall", "servo_wall", "viscous_damping"});
     StageSpec spec;
     spec.name = st["name"] ? r.text(st, "name", where) : "stage" + std::to_string(k);
+    // Stage names go into CSV rows and file names.
+    static const std::regex safeName("[A-Za-z0-9_][A-Za-z0-9_.-]{0,63}");
+    if (!std::regex_match(spec.name, safeName)) {
+      r.fail(st["name"], where + ".name", "must be 1-64 letters, digits, '_', '.', '-', not starting with '.' or '-'");
+    }
+    for (const StageSpec& other : scene.stages) {
+      if (other.name == spec.name) r.fail(st["name"], where + ".name", "'" + spec.name + "' names an earlier stage too");
+    }
     spec.duration = r.positive(st, "duration", where, "s");
     spec.viscousDamping = r.number(st, "viscous_damping", where, 0.0);
     if (spec.viscousDamping < 0.0) r.fail(st["viscous_damping"], where + ".viscous_damping", "must be >= 0 (1/s)");
@@ -452,10 +482,15 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
   }
 
   if (const YAML::Node out = root["output"]) {
-    r.allowOnly(out, "output", {"frames", "log_every", "contacts"});
+    r.allowOnly(out, "output", {"frames", "log_every", "contacts", "checkpoint_every_steps", "checkpoint_every_minutes"});
     scene.output.frames = static_cast<std::size_t>(r.integer(out, "frames", "output", 0.0, 1e5, 20.0));
     scene.output.logEvery = static_cast<std::size_t>(r.integer(out, "log_every", "output", 0.0, 1e12, 0.0));
     scene.output.contacts = r.flag(out, "contacts", "output", true);
+    scene.output.checkpointSteps = static_cast<std::uint64_t>(r.integer(out, "checkpoint_every_steps", "output", 0.0, 1e12, 0.0));
+    scene.output.checkpointMinutes = r.number(out, "checkpoint_every_minutes", "output", scene.output.checkpointMinutes);
+    if (!(scene.output.checkpointMinutes >= 0.0)) {
+      r.fail(out["checkpoint_every_minutes"], "output.checkpoint_every_minutes", "must be >= 0 (wall-clock minutes, 0: off)");
+    }
   }
   return scene;
 }
@@ -463,6 +498,11 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
 }  // namespace
 
 Scene loadScene(const std::string& path) {
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error)) {
+    throw SceneError(path + (std::filesystem::is_directory(path, error) ? ": is a directory, not a scene file"
+                                                                        : ": cannot open the scene file"));
+  }
   YAML::Node root;
   try {
     root = YAML::LoadFile(path);

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
 #include <numbers>
 #include <random>
 
@@ -28,6 +30,12 @@ Superquadric sampleShape(std::mt19937_64& rng, const ShapeFamily& f) {
   const double unit = Superquadric(1.0, b, c, f.n1, f.n2).volumeEquivalentRadius();
   const double s = radius / unit;
   return Superquadric(s, s * b, s * c, f.n1, f.n2);
+}
+
+std::string shortNumber(double x) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.4g", x);
+  return buffer;
 }
 
 Vec3 minimumImage(Vec3 d, const Domain& domain) {
@@ -65,6 +73,16 @@ World buildWorld(const Scene& scene) {
     }
     std::stable_sort(batch.begin(), batch.end(),
                      [](const auto& x, const auto& y) { return x.first.boundingRadius() > y.first.boundingRadius(); });
+    if (!batch.empty()) {  // the largest must fit the box at all (a unit slip between shapes and domain?)
+      const double diameter = 2.0 * batch.front().first.boundingRadius();
+      for (int d = 0; d < 3; ++d) {
+        if (diameter >= scene.domain.length()(d)) {
+          throw SceneError(scene.path + ": insert[" + std::to_string(k) + "]: a particle of bounding diameter " +
+                           shortNumber(diameter) + " m does not fit the domain, " + shortNumber(scene.domain.length()(d)) +
+                           " m along " + "xyz"[d] + " (are shapes and domain both in m?)");
+        }
+      }
+    }
     for (std::size_t n = 0; n < batch.size(); ++n) {
       const auto& [shape, q] = batch[n];
       const double r = shape.boundingRadius();
@@ -96,9 +114,21 @@ World buildWorld(const Scene& scene) {
   const double smallest = shapes.empty() ? 0.0 : std::min_element(shapes.begin(), shapes.end(), [](const auto& a, const auto& b) {
                                                    return a.volumeEquivalentRadius() < b.volumeEquivalentRadius();
                                                  })->volumeEquivalentRadius();
-  World world(shapes, materials, scene.domain, scene.skin > 0.0 ? scene.skin : 0.2 * smallest, scene.broadPhase);
+  const double skin = scene.skin > 0.0 ? scene.skin : 0.2 * smallest;
+  // Minimum image: a particle may reach at most one image of another along a periodic
+  // direction, so the period must exceed twice the largest reach (diameter + skin).
+  double largest = 0.0;
+  for (const double r : radii) largest = std::max(largest, r);
+  for (int d = 0; d < 3; ++d) {
+    const double reach = 2.0 * largest + skin;
+    if (scene.domain.periodic[d] && scene.domain.length()(d) < 2.0 * reach) {
+      throw SceneError(scene.path + ": domain: the periodic length along " + std::string(1, "xyz"[d]) + ", " +
+                       shortNumber(scene.domain.length()(d)) + " m, must be at least twice the largest bounding diameter " +
+                       "plus the skin (" + shortNumber(2.0 * reach) + " m here), or a particle would meet two images of another");
+    }
+  }
+  World world(shapes, materials, scene.domain, skin, scene.broadPhase);
   world.setReorderInterval(scene.reorderEvery);
-  double minScale = 1.0;
   for (const InteractionSpec& in : scene.interactions) {
     ContactModel model = world.defaultContactModel(in.materialA, in.materialB);
     model.normal = in.normal;
@@ -123,7 +153,6 @@ World buildWorld(const Scene& scene) {
                        " m acts up to a gap of 4 sigma, beyond the skin " + std::to_string(world.neighbourList().skin()) +
                        " m: raise 'skin' to at least 4 sigma");
     }
-    minScale = std::min(minScale, in.stiffnessScale);
     world.setContactModel(in.materialA, in.materialB, model);
   }
   for (const WallSpec& spec : scene.walls) {
@@ -136,11 +165,17 @@ World buildWorld(const Scene& scene) {
   for (std::size_t i = 0; i < shapes.size(); ++i) {
     world.addParticle(static_cast<std::uint32_t>(i), materialOf[i], centres[i], orientations[i]);
   }
-  // Rayleigh time scales as E^-1/2: the reduced stiffness lengthens the stable step.
-  double dt = scene.timeStepFraction * world.rayleighTimeStep() / std::sqrt(minScale);
-  if (scene.impactVelocity > 0.0) dt = std::min(dt, world.hertzTimeStep(scene.impactVelocity, scene.stepsPerCollision));
-  world.setTimeStep(scene.timeStep ? *scene.timeStep : dt);
+  world.setTimeStep(scene.timeStep ? *scene.timeStep : automaticTimeStep(scene, world, scene.timeStepFraction));
   return world;
+}
+
+double automaticTimeStep(const Scene& scene, const World& world, double fraction) {
+  // Rayleigh time scales as E^-1/2: the reduced stiffness lengthens the stable step.
+  double minScale = 1.0;
+  for (const InteractionSpec& in : scene.interactions) minScale = std::min(minScale, in.stiffnessScale);
+  double dt = fraction * world.rayleighTimeStep() / std::sqrt(minScale);
+  if (scene.impactVelocity > 0.0) dt = std::min(dt, world.hertzTimeStep(scene.impactVelocity, scene.stepsPerCollision));
+  return dt;
 }
 
 }  // namespace sqdem

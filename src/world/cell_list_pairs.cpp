@@ -23,8 +23,17 @@ std::vector<CandidatePair> cellListPairs(const Domain& domain, const std::vector
   const double width = 2.0 * maxRadius + skin;
   std::array<int, 3> cells{};
   Vec3 cellSize;
+  // Cells at least `width` wide; a sparse domain (few particles in a huge box) gets fewer,
+  // larger cells, so the grid never holds many more cells than particles.
+  std::array<double, 3> fit{};
+  for (int d = 0; d < 3; ++d) fit[d] = std::max(1.0, std::floor(domain.length()(d) / width));
+  const double largestGrid = std::max(27.0, 4.0 * static_cast<double>(n));
+  while (fit[0] * fit[1] * fit[2] > largestGrid) {
+    double& widest = *std::max_element(fit.begin(), fit.end());
+    widest = std::max(1.0, std::floor(widest / 2.0));
+  }
   for (int d = 0; d < 3; ++d) {
-    cells[d] = std::max(1, static_cast<int>(std::floor(domain.length()(d) / width)));
+    cells[d] = static_cast<int>(fit[d]);
     if (domain.periodic[d] && cells[d] < minimumPeriodicCells) cells[d] = 1;  // all-pairs along d
     cellSize(d) = domain.length()(d) / cells[d];
   }

@@ -1,20 +1,18 @@
-// World checkpoints: raw little-endian binary of the dynamic state, preceded by a header that
-// identifies the format and the world's size. Plain-data records (Contact, Wall, vectors of
-// Eigen fixed-size types) are written as bytes, so a checkpoint is for the same build and
-// machine architecture; it is a restart file, not an archive format.
+// World checkpoints: the dynamic state as raw little-endian records (Contact, Wall, vectors of
+// Eigen fixed-size types are plain data). The file around it (checkpoint_file.hpp) carries the
+// magic, the build and scene fingerprints and a checksum; here every count and index is checked
+// again while reading, so even a payload that passed the checksum cannot index out of range.
 
-#include <cstring>
-#include <istream>
+#include <algorithm>
+#include <cmath>
 #include <ostream>
-#include <stdexcept>
 #include <type_traits>
 
+#include "sqdem/world/checkpoint_file.hpp"
 #include "sqdem/world/world.hpp"
 
 namespace sqdem {
 namespace {
-
-constexpr char magic[8] = {'s', 'q', 'd', 'e', 'm', 'c', 'k', '4'};
 
 template <typename T>
 void put(std::ostream& out, const T& value) {
@@ -28,26 +26,13 @@ void putVector(std::ostream& out, const std::vector<T>& v) {
   out.write(reinterpret_cast<const char*>(v.data()), static_cast<std::streamsize>(v.size() * sizeof(T)));
 }
 
-template <typename T>
-void get(std::istream& in, T& value) {
-  in.read(reinterpret_cast<char*>(&value), sizeof(T));
-  if (!in) throw std::runtime_error("checkpoint is truncated");
-}
-
-template <typename T>
-void getVector(std::istream& in, std::vector<T>& v, std::uint64_t limit) {
-  std::uint64_t n = 0;
-  get(in, n);
-  if (n > limit) throw std::runtime_error("checkpoint is corrupt (implausible array size)");
-  v.resize(n);
-  in.read(reinterpret_cast<char*>(v.data()), static_cast<std::streamsize>(n * sizeof(T)));
-  if (!in) throw std::runtime_error("checkpoint is truncated");
+void require(bool ok, const char* what) {
+  if (!ok) throw CheckpointError(std::string("checkpoint is corrupt (") + what + ")");
 }
 
 }  // namespace
 
 void World::writeState(std::ostream& out) const {
-  out.write(magic, sizeof magic);
   put(out, static_cast<std::uint64_t>(particles_.size()));
   put(out, static_cast<std::uint64_t>(walls_.size()));
   ParticleStore::forEachArray(particles_, [&](const auto& array) { putVector(out, array); });
@@ -69,42 +54,86 @@ void World::writeState(std::ostream& out) const {
   if (!out) throw std::runtime_error("cannot write the checkpoint");
 }
 
-void World::readState(std::istream& in) {
-  char header[sizeof magic];
-  in.read(header, sizeof header);
-  if (!in || std::memcmp(header, magic, sizeof magic) != 0) throw std::runtime_error("not an sqdem checkpoint");
+void World::readState(CheckpointReader& in) {
   std::uint64_t n = 0, walls = 0;
-  get(in, n);
-  get(in, walls);
+  in.get(n);
+  in.get(walls);
   if (n != particles_.size() || walls != walls_.size()) {
-    throw std::runtime_error("checkpoint has " + std::to_string(n) + " particles and " + std::to_string(walls) +
-                             " walls; the scene builds " + std::to_string(particles_.size()) + " and " +
-                             std::to_string(walls_.size()));
+    throw CheckpointError("checkpoint has " + std::to_string(n) + " particles and " + std::to_string(walls) +
+                          " walls; the scene builds " + std::to_string(particles_.size()) + " and " +
+                          std::to_string(walls_.size()));
   }
-  const std::uint64_t limit = 1ull << 34;
-  ParticleStore::forEachArray(particles_, [&](auto& array) { getVector(in, array, n); });
-  getVector(in, boundingRadius_, n);
-  getVector(in, walls_, walls);
-  getVector(in, wallReference_, walls);
-  getVector(in, pairs_, limit);
-  getVector(in, interacting_, limit);
-  std::vector<Vec3> reference;
+  const std::uint64_t anyLength = ~std::uint64_t{0};  // bounded by the bytes left
+  ParticleStore restored;
+  ParticleStore::forEachArray(restored, [&](auto& array) {
+    in.getVector(array, n);
+    require(array.size() == n, "per-particle array length");
+  });
+  std::vector<double> boundingRadius;
+  std::vector<Wall> wallRecords;
+  std::vector<Vec3> wallReference, reference;
+  std::vector<Contact> pairs;
+  std::vector<std::uint32_t> interacting;
   std::vector<CandidatePair> candidates;
   int builds = 0;
-  getVector(in, reference, n);
-  getVector(in, candidates, limit);
-  get(in, builds);
-  neighbours_.restore(std::move(reference), std::move(candidates), builds);
-  get(in, statistics_);
-  get(in, gravity_);
-  get(in, viscousDamping_);
-  get(in, reorderInterval_);
-  get(in, dt_);
-  get(in, time_);
-  get(in, forcesCurrent_);
-  for (const Contact& c : pairs_) {
-    if (c.a >= n || (c.onWall() ? (c.b & ~wallFlag) >= walls : c.b >= n)) throw std::runtime_error("checkpoint is corrupt (contact index)");
+  in.getVector(boundingRadius, n);
+  in.getVector(wallRecords, walls);
+  in.getVector(wallReference, walls);
+  in.getVector(pairs, anyLength);
+  in.getVector(interacting, anyLength);
+  in.getVector(reference, n);
+  in.getVector(candidates, anyLength);
+  in.get(builds);
+  WorldStatistics statistics;
+  Vec3 gravity;
+  double viscousDamping = 0.0, dt = 0.0, time = 0.0;
+  int reorderInterval = 0;
+  bool forcesCurrent = false;
+  in.get(statistics);
+  in.get(gravity);
+  in.get(viscousDamping);
+  in.get(reorderInterval);
+  in.get(dt);
+  in.get(time);
+  in.get(forcesCurrent);
+  require(in.left() == 0, "trailing bytes");
+
+  // Every index the engine will follow.
+  std::vector<std::uint8_t> seen(n, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    require(restored.shape[i] < shapes_.size() && restored.material[i] < materials_.size(), "shape or material index");
+    require(restored.id[i] < n && !seen[restored.id[i]]++, "particle ids");
   }
+  require(boundingRadius.size() == n && wallRecords.size() == walls && (reference.empty() || reference.size() == n),
+          "array lengths");
+  for (const Wall& w : wallRecords) require(w.material < materials_.size(), "wall material index");
+  require(wallReference.empty() || wallReference.size() == walls, "wall reference points");
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    const Contact& c = pairs[k];
+    require(c.a < n && (c.onWall() ? (c.b & ~wallFlag) < walls : c.b < n && c.a != c.b), "contact index");
+    require(static_cast<unsigned>(c.geometry.status) <= static_cast<unsigned>(ContactStatus::NonFinite), "contact status");
+    require(k == 0 || pairs[k - 1].key() < c.key(), "contact order");
+  }
+  for (std::size_t k = 0; k < interacting.size(); ++k) {
+    require(interacting[k] < pairs.size() && (k == 0 || interacting[k - 1] < interacting[k]), "interacting contacts");
+  }
+  for (const CandidatePair& c : candidates) require(c.a < n && c.b < n && c.a != c.b, "candidate pair index");
+  require(builds >= 0 && std::isfinite(dt) && dt > 0.0 && std::isfinite(time), "counters");
+
+  particles_ = std::move(restored);
+  boundingRadius_ = std::move(boundingRadius);
+  walls_ = std::move(wallRecords);
+  wallReference_ = std::move(wallReference);
+  pairs_ = std::move(pairs);
+  interacting_ = std::move(interacting);
+  neighbours_.restore(std::move(reference), std::move(candidates), builds);
+  statistics_ = statistics;
+  gravity_ = gravity;
+  viscousDamping_ = viscousDamping;
+  reorderInterval_ = reorderInterval;
+  dt_ = dt;
+  time_ = time;
+  forcesCurrent_ = forcesCurrent;
   indexInvolvement();
 }
 

@@ -86,6 +86,8 @@ struct OutputSpec {
   std::size_t frames = 20;      ///< VTK frames per stage (plus the initial state)
   std::size_t logEvery = 0;     ///< CSV row every N steps (0: 200 rows per stage)
   bool contacts = true;         ///< write the contact network (.vtp)
+  std::uint64_t checkpointSteps = 0;  ///< also write <name>_latest.checkpoint every N steps (0: off)
+  double checkpointMinutes = 10.0;    ///< ... and every M wall-clock minutes (0: off)
 };
 
 struct Scene {
@@ -111,5 +113,9 @@ struct Scene {
 
 /// Reads and validates a scene file; throws SceneError("file:line: key: message").
 Scene loadScene(const std::string& path);
+
+/// A hash of everything the scene declares except its path and its `output` keys: a
+/// checkpoint written by one scene is refused by another (checkpoint_file.hpp).
+std::uint64_t sceneFingerprint(const Scene& scene);
 
 }  // namespace sqdem

@@ -12,4 +12,9 @@ namespace sqdem {
 /// Throws SceneError (naming the insertion) when the region cannot hold the particles.
 World buildWorld(const Scene& scene);
 
+/// The automatic time step of a built world (s): `fraction` x the Rayleigh time of its smallest
+/// particle (longer by E^-1/2 under reduced stiffness), and with a declared impact_velocity at
+/// most the Hertz collision time over steps_per_collision.
+double automaticTimeStep(const Scene& scene, const World& world, double fraction);
+
 }  // namespace sqdem

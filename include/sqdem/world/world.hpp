@@ -23,6 +23,8 @@
 
 namespace sqdem {
 
+class CheckpointReader;
+
 struct Material {
   double youngsModulus = 0.0;  ///< E (Pa)
   double poissonRatio = 0.0;   ///< nu (-)
@@ -99,6 +101,7 @@ class World {
   void addWall(const Wall& wall) { walls_.push_back(wall); }
 
   void setGravity(const Vec3& g) { gravity_ = g; }
+  const Vec3& gravity() const { return gravity_; }
   /// Re-order the particle slots along a Hilbert curve every `rebuilds` neighbour-list builds
   /// (0: never). Results then differ from an unordered run by round-off only (summation order).
   void setReorderInterval(int rebuilds) { reorderInterval_ = rebuilds; }
@@ -137,8 +140,10 @@ class World {
   /// materials, laws) come from the scene. Restoring into a world built from the same scene
   /// continues bit for bit (world_state.cpp).
   void writeState(std::ostream& out) const;
-  /// Throws std::runtime_error if the checkpoint does not match this world.
-  void readState(std::istream& in);
+  /// Restores a state written by writeState; throws CheckpointError (checkpoint_file.hpp) if it
+  /// does not match this world or any count or index is out of range. The world is unchanged
+  /// when it throws.
+  void readState(CheckpointReader& in);
 
   /// Normal pressure on wall w: |F . n| over the box cross-section normal to the wall's
   /// dominant axis (Pa).

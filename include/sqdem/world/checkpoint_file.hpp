@@ -1,0 +1,86 @@
+#pragma once
+// Checkpoint files: a fixed header, then the payload (the run's progress and the World's state,
+// world_state.cpp). The header makes a checkpoint self-checking:
+//
+//   magic "sqdemCKP" | format version (u32) | build fingerprint (u64) | scene fingerprint (u64)
+//   | payload size (u64) | payload CRC-32 (u32) | payload
+//
+// The build fingerprint covers the format version and the byte layout of every record written
+// raw (a checkpoint is a restart file for the same build, not an archive); the scene fingerprint
+// is a hash of the validated scene (sceneFingerprint in io/scene.hpp). A corrupted, truncated,
+// foreign or other-build file is refused with one message (CheckpointError) before any of its
+// payload is used.
+
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <vector>
+
+namespace sqdem {
+
+class CheckpointError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Incremental 64-bit hash (CRC-64/ECMA-182 through Boost.CRC) of a sequence of values.
+class Fingerprint {
+ public:
+  Fingerprint& bytes(const void* data, std::size_t size);
+  Fingerprint& operator()(double v) { return bytes(&v, sizeof v); }
+  Fingerprint& operator()(std::uint64_t v) { return bytes(&v, sizeof v); }
+  Fingerprint& operator()(std::string_view s);
+  std::uint64_t value() const { return state_; }
+
+ private:
+  std::uint64_t state_ = 0;
+};
+
+/// Reads a checkpoint payload value by value: every read is bounded by the bytes left, so a
+/// corrupt count can neither read past the end nor allocate more than the file holds.
+class CheckpointReader {
+ public:
+  explicit CheckpointReader(std::string_view payload) : data_(payload) {}
+
+  template <typename T>
+  void get(T& value) {
+    static_assert(std::is_trivially_destructible_v<T>);  // plain data (Eigen types are not trivially copyable by trait)
+    take(&value, sizeof(T));
+  }
+  /// A vector written as its size then its elements; at most `limit` elements.
+  template <typename T>
+  void getVector(std::vector<T>& v, std::uint64_t limit) {
+    static_assert(std::is_trivially_destructible_v<T>);  // plain data (Eigen types are not trivially copyable by trait)
+    std::uint64_t n = 0;
+    get(n);
+    if (n > limit || n > left() / sizeof(T)) throw CheckpointError("checkpoint is corrupt (implausible array size)");
+    v.resize(n);
+    take(v.data(), n * sizeof(T));
+  }
+  std::size_t left() const { return data_.size() - at_; }
+
+ private:
+  void take(void* out, std::size_t size) {
+    if (size > left()) throw CheckpointError("checkpoint is truncated");
+    std::memcpy(out, data_.data() + at_, size);
+    at_ += size;
+  }
+  std::string_view data_;
+  std::size_t at_ = 0;
+};
+
+/// The build's own fingerprint: format version and record layouts (checkpoint_file.cpp).
+std::uint64_t buildFingerprint();
+
+/// Writes header + payload atomically (a crash leaves the previous file or none).
+void writeCheckpointFile(const std::filesystem::path& path, std::uint64_t sceneFingerprint, std::string_view payload);
+
+/// Reads a checkpoint and returns its payload after checking every header field and the CRC;
+/// throws CheckpointError("<path>: <what is wrong>").
+std::string readCheckpointFile(const std::filesystem::path& path, std::uint64_t sceneFingerprint);
+
+}  // namespace sqdem

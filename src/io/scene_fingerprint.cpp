@@ -1,0 +1,57 @@
+// sceneFingerprint (scene.hpp): every field of the validated scene but its path and output
+// settings, fed in declaration order to a CRC-64. A new Scene field must be added here.
+
+#include "sqdem/io/scene.hpp"
+#include "sqdem/world/checkpoint_file.hpp"
+
+namespace sqdem {
+namespace {
+
+struct SceneHasher {
+  Fingerprint f;
+
+  void operator()(double v) { f(v); }
+  void operator()(std::uint64_t v) { f(v); }
+  void operator()(const std::string& s) { f(s); }
+  void operator()(const Vec3& v) { f(v.x())(v.y())(v.z()); }
+  template <typename... T>
+  void all(const T&... values) { ((*this)(values), ...); }
+  /// Integers, enums and flags as one 64-bit value each.
+  template <typename T>
+  static std::uint64_t n(T v) { return static_cast<std::uint64_t>(v); }
+};
+
+}  // namespace
+
+std::uint64_t sceneFingerprint(const Scene& scene) {
+  SceneHasher h;
+  const Domain& d = scene.domain;
+  h.all(scene.seed, d.lo, d.hi, h.n(d.periodic[0]), h.n(d.periodic[1]), h.n(d.periodic[2]), scene.gravity,
+        scene.timeStep.value_or(0.0), scene.timeStepFraction, scene.impactVelocity, scene.stepsPerCollision, scene.skin,
+        h.n(scene.broadPhase), h.n(scene.reorderEvery));
+  for (const NamedMaterial& m : scene.materials) {
+    const Material& x = m.material;
+    h.all(m.name, x.youngsModulus, x.poissonRatio, x.density, x.friction, x.restitution, x.yieldStrength);
+  }
+  for (const ShapeFamily& s : scene.shapes) {
+    h.all(s.name, s.volumeRadius[0], s.volumeRadius[1], s.aspectB[0], s.aspectB[1], s.aspectC[0], s.aspectC[1], s.n1, s.n2);
+  }
+  for (const InteractionSpec& i : scene.interactions) {
+    h.all(h.n(i.materialA), h.n(i.materialB), h.n(i.normal), h.n(i.tangential), h.n(i.eccentricity), i.capFactor, i.restitution, i.friction, i.stiffnessScale,
+          i.surfaceEnergy, i.roughnessSigma, i.asperityCount, i.rollingHysteresis, h.n(i.plasticTransition), i.lambdaMax,
+          i.epsilonMax);
+  }
+  for (const WallSpec& w : scene.walls) h.all(w.point, w.normal, w.velocity, h.n(w.material));
+  for (const InsertionSpec& in : scene.insertions) {
+    h.all(h.n(in.count), in.solidFraction, h.n(in.shape), h.n(in.material), in.lo, in.hi, h.n(in.randomOrientation));
+  }
+  for (const StageSpec& st : scene.stages) {
+    h.all(st.name, st.duration, st.kineticEnergyRatio, st.wallPressure, h.n(st.pressureWall), st.minimumDuration,
+          st.viscousDamping, h.n(st.wall.value_or(~std::size_t{0})), st.wallVelocity,
+          h.n(st.servoWall.value_or(~std::size_t{0})), st.servo.pressure, st.servo.maxSpeed);
+    for (const auto& [t, x] : st.wallPath.points) h.all(t, x);
+  }
+  return h.f.value();
+}
+
+}  // namespace sqdem

@@ -1,0 +1,117 @@
+#include "sqdem/world/checkpoint_file.hpp"
+
+#include <boost/crc.hpp>
+
+#include <cstring>
+#include <fstream>
+#include <iterator>
+
+#include "sqdem/io/atomic_file.hpp"
+#include "sqdem/world/world.hpp"
+
+namespace sqdem {
+namespace {
+
+constexpr char magic[8] = {'s', 'q', 'd', 'e', 'm', 'C', 'K', 'P'};
+constexpr std::uint32_t formatVersion = 5;
+constexpr std::size_t headerSize = sizeof magic + 4 + 8 + 8 + 8 + 4;
+constexpr std::uint64_t largestPayload = std::uint64_t{1} << 40;  // 1 TiB: anything larger is corrupt
+
+using Crc64 = boost::crc_optimal<64, 0x42F0E1EBA9EA3693ull, 0, 0, false, false>;
+
+std::uint32_t crc32(std::string_view data) {
+  boost::crc_32_type crc;
+  crc.process_bytes(data.data(), data.size());
+  return crc.checksum();
+}
+
+template <typename T>
+void append(std::string& out, T value) {
+  out.append(reinterpret_cast<const char*>(&value), sizeof value);
+}
+
+template <typename T>
+T field(std::string_view header, std::size_t& at) {
+  T value;
+  std::memcpy(&value, header.data() + at, sizeof value);
+  at += sizeof value;
+  return value;
+}
+
+std::string hex(std::uint64_t v) {
+  char buffer[20];
+  std::snprintf(buffer, sizeof buffer, "%016llx", static_cast<unsigned long long>(v));
+  return buffer;
+}
+
+}  // namespace
+
+Fingerprint& Fingerprint::bytes(const void* data, std::size_t size) {
+  Crc64 crc(state_);
+  crc.process_bytes(data, size);
+  state_ = crc.checksum();
+  return *this;
+}
+
+Fingerprint& Fingerprint::operator()(std::string_view s) {
+  (*this)(static_cast<std::uint64_t>(s.size()));
+  return bytes(s.data(), s.size());
+}
+
+std::uint64_t buildFingerprint() {
+  Fingerprint f;
+  for (const std::size_t size : {sizeof(Contact), sizeof(Wall), sizeof(WorldStatistics), sizeof(CandidatePair),
+                                 sizeof(Vec3), sizeof(Quat), sizeof(Vec4), sizeof(ContactGeometry),
+                                 sizeof(ContactHistory), sizeof(ContactForce)}) {
+    f(static_cast<std::uint64_t>(size));
+  }
+  return f(static_cast<std::uint64_t>(formatVersion)).value();
+}
+
+void writeCheckpointFile(const std::filesystem::path& path, std::uint64_t sceneFingerprint, std::string_view payload) {
+  std::string file(magic, sizeof magic);
+  append(file, formatVersion);
+  append(file, buildFingerprint());
+  append(file, sceneFingerprint);
+  append(file, static_cast<std::uint64_t>(payload.size()));
+  append(file, crc32(payload));
+  file.append(payload);
+  writeFileAtomically(path, file);
+}
+
+std::string readCheckpointFile(const std::filesystem::path& path, std::uint64_t sceneFingerprint) {
+  const auto fail = [&](const std::string& what) { return CheckpointError(path.string() + ": " + what); };
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error)) throw fail("not a checkpoint file (missing, or not a regular file)");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw fail("cannot open the checkpoint");
+  std::string header(headerSize, '\0');
+  in.read(header.data(), static_cast<std::streamsize>(headerSize));
+  if (!in || std::memcmp(header.data(), magic, sizeof magic) != 0) throw fail("not an sqdem checkpoint (no header)");
+  std::size_t at = sizeof magic;
+  const auto version = field<std::uint32_t>(header, at);
+  const auto build = field<std::uint64_t>(header, at);
+  const auto scene = field<std::uint64_t>(header, at);
+  const auto size = field<std::uint64_t>(header, at);
+  const auto crc = field<std::uint32_t>(header, at);
+  if (version != formatVersion) {
+    throw fail("checkpoint format " + std::to_string(version) + ", this build reads format " + std::to_string(formatVersion));
+  }
+  if (build != buildFingerprint()) throw fail("written by another build of sqdem (its record layout differs); rerun the scene");
+  if (scene != sceneFingerprint) {
+    throw fail("written for another scene (scene fingerprint " + hex(scene) + ", this scene " + hex(sceneFingerprint) +
+               "): resume with the scene file that wrote it, unchanged but for its 'output' keys");
+  }
+  const auto fileSize = std::filesystem::file_size(path, error);
+  if (error || size > largestPayload || fileSize != headerSize + size) {
+    throw fail("checkpoint is truncated or padded (header announces " + std::to_string(size) + " payload bytes, file has " +
+               std::to_string(error ? 0 : fileSize - headerSize) + ")");
+  }
+  std::string payload(size, '\0');
+  in.read(payload.data(), static_cast<std::streamsize>(size));
+  if (!in) throw fail("cannot read the checkpoint's payload");
+  if (crc32(payload) != crc) throw fail("checkpoint is corrupt (checksum mismatch)");
+  return payload;
+}
+
+}  // namespace sqdem

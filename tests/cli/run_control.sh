@@ -1,0 +1,60 @@
+# `sqdem run` control on tests/scenes/small_bed.yaml: checkpoints resume bit for bit (mid-stage
+# and after SIGINT) with the step column continuing; an occupied --out is refused and left
+# untouched; --overwrite replaces sqdem's files; stale temporaries are removed; foreign,
+# truncated and corrupted checkpoints get one clear message and exit 1.
+. "$(dirname "$0")/lib.sh"
+scene="$source_dir/tests/scenes/small_bed.yaml"
+a="$scratch/a"
+
+check "uninterrupted run" "$sqdem" run "$scene" --out "$a" > "$scratch/a.log"
+final=$(tail -1 "$a/small_bed.csv")
+
+# Mid-stage resume from the periodic checkpoint (every 5000 steps: the last one is in 'pour').
+check "resume from the periodic checkpoint" "$sqdem" run "$scene" --resume "$a/small_bed_latest.checkpoint" --out "$a" > /dev/null
+check "resumed final row equals the uninterrupted one (step column continues)" \
+  test "$(tail -1 "$a/small_bed_from_step10000.csv")" = "$final"
+check "resumed CSV starts past step 10000" awk -F, 'NR == 2 { exit !($2 > 10000) }' "$a/small_bed_from_step10000.csv"
+
+# An occupied --out: refused, nothing touched; --overwrite replaces sqdem's own files only.
+before=$(cksum < "$a/small_bed.csv")
+echo keep > "$a/notes.txt"
+expect_error "occupied --out" 1 "already holds .* --overwrite" "$sqdem" run "$scene" --out "$a"
+check "refused run left the CSV alone" test "$(cksum < "$a/small_bed.csv")" = "$before"
+check "overwrite" "$sqdem" run "$scene" --out "$a" --overwrite > /dev/null
+check "overwrite reproduces the run" test "$(tail -1 "$a/small_bed.csv")" = "$final"
+check "overwrite keeps other files" test -f "$a/notes.txt"
+check "overwrite removed the resumed files of the old run" test ! -e "$a/small_bed_from_step10000.csv"
+
+# SIGINT: finishes the step, writes log and checkpoint, says how to resume, exits 130.
+b="$scratch/b"
+stale_pid=$(sh -c 'echo $$')
+mkdir -p "$b" && echo partial > "$b/small_bed.csv.tmp$stale_pid"
+"$sqdem" run "$scene" --out "$b" > "$scratch/b.log" 2> "$scratch/b.err" &
+pid=$!
+for _ in $(seq 600); do
+  [ -f "$b/small_bed.csv" ] && [ "$(wc -l < "$b/small_bed.csv")" -ge 10 ] && break
+  sleep 0.05
+done
+kill -INT "$pid"
+wait "$pid"
+rc=$?
+check "SIGINT exits 130 (got $rc)" test "$rc" -eq 130
+check "SIGINT says how to resume" grep -q "resume with: sqdem run .* --resume .*small_bed_latest.checkpoint" "$scratch/b.err"
+check "stale temporary removed" test ! -e "$b/small_bed.csv.tmp$stale_pid"
+step=$(tail -1 "$b/small_bed.csv" | cut -d, -f2)
+check "interrupted resume" "$sqdem" run "$scene" --resume "$b/small_bed_latest.checkpoint" --out "$b" > /dev/null
+check "interrupted run resumed to the same final row" test "$(tail -1 "$b/small_bed_from_step$step.csv")" = "$final"
+
+# Bad checkpoints.
+sed 's/youngs_modulus: 1.0e7/youngs_modulus: 2.0e7/' "$scene" > "$scratch/stiffer.yaml"
+expect_error "foreign checkpoint" 1 "written for another scene" \
+  "$sqdem" run "$scratch/stiffer.yaml" --resume "$a/small_bed_after_pour.checkpoint" --out "$scratch/c"
+head -c 5000 "$a/small_bed_after_pour.checkpoint" > "$scratch/truncated.checkpoint"
+expect_error "truncated checkpoint" 1 "truncated" "$sqdem" run "$scene" --resume "$scratch/truncated.checkpoint" --out "$scratch/c"
+cp "$a/small_bed_after_pour.checkpoint" "$scratch/flipped.checkpoint"
+printf '\x5a' | dd of="$scratch/flipped.checkpoint" bs=1 seek=4000 conv=notrunc 2>/dev/null
+expect_error "corrupted checkpoint" 1 "checksum" "$sqdem" run "$scene" --resume "$scratch/flipped.checkpoint" --out "$scratch/c"
+expect_error "directory as checkpoint" 1 "not a checkpoint file" "$sqdem" run "$scene" --resume "$scratch" --out "$scratch/c"
+expect_error "scene as checkpoint" 1 "not an sqdem checkpoint" "$sqdem" run "$scene" --resume "$scene" --out "$scratch/c"
+check "bad checkpoints created no output" test ! -e "$scratch/c"
+finish

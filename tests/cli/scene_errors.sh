@@ -1,0 +1,72 @@
+# Impossible, mistyped and hostile scenes and options: one message naming the file, the key and
+# what is allowed, exit 1 (2 for usage), and no output directory created. Runs that go wrong
+# numerically stop with the likely cause and exit 3.
+. "$(dirname "$0")/lib.sh"
+base="$source_dir/tests/scenes/small_bed.yaml"
+out="$scratch/out"
+
+# variant NAME SED-EXPRESSION: the small bed scene with one edit.
+variant() { sed "$2" "$base" > "$scratch/$1.yaml"; echo "$scratch/$1.yaml"; }
+refused() {  # refused NAME PATTERN SCENE
+  expect_error "$1" 1 "$2" "$sqdem" run "$3" --out "$out"
+  check "$1: no output" test ! -e "$out"
+  rm -rf "$out"
+}
+
+# Time step and stage length (issue items 3, 4, 8).
+refused "time_step 1000" "'time_step': 1000 s is .* at most 5 x" "$(variant dt1000 's/^time_step_fraction: 0.2/time_step: 1000/')"
+refused "E = 1e300 with an explicit step" "'time_step'.*at most 5 x" \
+  "$(variant e300 's/^time_step_fraction: 0.2/time_step: 1.0e-6/; s/youngs_modulus: 1.0e7/youngs_modulus: 1.0e300/')"
+refused "E = 142 Pa (forgot e9)" "'stages\[0\].duration' \(stage 'pour'\): .* shorter than one step" \
+  "$(variant e142 's/youngs_modulus: 1.0e7/youngs_modulus: 142/; s/duration: 0.06/duration: 1.0e-4/')"
+refused "duration 1e20" "'stages\[0\].duration'.*more than 1e12 steps" "$(variant long 's/duration: 0.06/duration: 1.0e+20/')"
+refused "time_step 1e-30" "more than 1e12 steps" "$(variant tiny 's/^time_step_fraction: 0.2/time_step: 1.0e-30/')"
+refused "density 1e-300" "more than 1e12 steps" "$(variant light 's/density: 2500/density: 1.0e-300/')"
+
+# Stage names go into CSV rows and file names (item 6).
+for name in '"a,b"' '"a\\nb"' '"x/../../../escape"' '".hidden"' '"-x"'; do
+  refused "stage name $name" "stage.yaml:[0-9]+: 'stages\[0\].name': must be 1-64 letters" "$(variant stage "s|name: pour|name: $name|")"
+done
+refused "duplicate stage names" "'stages\[1\].name': 'pour' names an earlier stage" "$(variant twice 's/name: press/name: pour/')"
+
+# Impossible geometry and unit slips (item 8).
+refused "periodic box narrower than two reaches" "periodic length along x, 0.002 m, must be at least twice" \
+  "$(variant narrow 's/hi: \[6.0e-3, 6.0e-3, 12.0e-3\]/hi: [2.0e-3, 6.0e-3, 12.0e-3]/; s/hi: \[6.0e-3, 6.0e-3, 11.0e-3\]/hi: [2.0e-3, 6.0e-3, 11.0e-3]/; s/count: 120/count: 10/')"
+refused "insert region outside the domain" "'insert\[0\].region': reaches outside the domain along z" \
+  "$(variant outside 's/hi: \[6.0e-3, 6.0e-3, 11.0e-3\]/hi: [6.0e-3, 6.0e-3, 20.0e-3]/')"
+refused "particle larger than the box" "insert\[0\]: a particle of bounding diameter .* does not fit the domain" \
+  "$(variant huge 's/volume_radius: \[0.4e-3, 0.5e-3\]/volume_radius: [0.4, 0.5]/')"
+refused "duplicate key" "dupkey.yaml:[0-9]+: 'materials.glass.density': given twice" \
+  "$(variant dupkey 's/density: 2500,/density: 2500, density: 5000,/')"
+refused "aspect_b -1" "aspectb.yaml:[0-9]+: 'shapes.bead.aspect_b': must be > 0" "$(variant aspectb 's/aspect_b: \[0.7, 1.0\]/aspect_b: -1/')"
+refused "directory as scene" "is a directory, not a scene file" "$scratch"
+expect_error "--out twice" 2 "'--out' is given twice" "$sqdem" run "$base" --out "$out" --out "$out"
+
+# A domain in m with particles in um runs (the cell grid adapts) and says so.
+sparse=$(variant sparse 's/volume_radius: \[0.4e-3, 0.5e-3\]/volume_radius: [0.4e-6, 0.5e-6]/; s/duration: 0.06/duration: 1.0e-6/; s/duration: 0.02/duration: 1.0e-6/')
+expect_error "sparse domain warns" 0 "fill .* of the domain's volume; are 'domain' and 'shapes' both in m" "$sqdem" run "$sparse" --out "$scratch/sparse"
+
+# A run that blows up stops with the cause and exit 3, its log written (item 3).
+blowup=$(variant blowup 's/^time_step_fraction: 0.2/time_step_fraction: 1.0/; s/gravity: \[0, 0, -9.81\]/gravity: [0, 0, -1.0e4]/')
+expect_error "runaway energy" 3 "numerical trouble at step [0-9]+ .*runaway energy" "$sqdem" run "$blowup" --out "$scratch/blowup"
+expect_error "runaway names the cause" 3 "Likely cause: the time step .* x the Rayleigh time" \
+  "$sqdem" run "$blowup" --out "$scratch/blowup" --overwrite
+check "runaway: log rows kept" test "$(wc -l < "$scratch/blowup/blowup.csv")" -ge 3
+
+# Other commands (item 9).
+expect_error "JSON number overflow" 1 "a number out of range" sh -c "echo '{\"particles\": [1e400]}' | \"$sqdem\" geometry -"
+expect_error "directory as JSON" 1 "is a directory, not a JSON file" "$sqdem" geometry "$scratch"
+sv="--density 1350 --youngs-modulus 1.2e9 --poisson-ratio 0.33 --wall-youngs-modulus 166e9 --wall-poisson-ratio 0.28 --surface-energy 0.24 --yield-pressure 30e6"
+expect_error "sticking-velocity radius 1e-300" 1 "option --radius = '1e-300': expected particle radius R \(m\), in \[1e-9, 1\]" \
+  "$sqdem" sticking-velocity --radius 1e-300 $sv
+expect_error "sticking-velocity repeated option" 1 "option --radius is given twice" \
+  "$sqdem" sticking-velocity --radius 2e-6 --radius 3e-6 $sv
+expect_error "sticking-velocity hex" 1 "option --density = '0x10'" \
+  "$sqdem" sticking-velocity --radius 2e-6 $(echo "$sv" | sed 's/--density 1350/--density 0x10/')
+far='{"material": {"youngs_modulus": 1e9, "poisson_ratio": 0.3}, "path": {"points": [0, 9, 0], "unit": "m", "steps": 5},
+ "curves": [{"label": "c", "geometry": {"particles": [{"a": 5e-6, "b": 5e-6, "c": 5e-6, "centre": [0, 0, 0]},
+ {"a": 5e-6, "b": 5e-6, "c": 5e-6, "centre": [1e-5, 0, 0]}]}, "law": {"type": "hertz"}}]}'
+echo "$far" > "$scratch/far.json"
+expect_error "contact with detector failures" 1 "could not resolve.*--allow-detector-failures" \
+  "$sqdem" contact "$scratch/far.json" --out "$scratch/far"
+finish
