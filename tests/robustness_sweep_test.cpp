@@ -11,29 +11,14 @@
 #include <cstdlib>
 
 #include "sqdem/contact/detector.hpp"
+#include "support/contact_checks.hpp"
 #include "support/random_pairs.hpp"
 
 namespace sqdem {
 namespace {
 
-bool allFinite(const ContactGeometry& g) {
-  return g.pointA.allFinite() && g.pointB.allFinite() && g.normal.allFinite() &&
-         std::isfinite(g.overlap) && std::isfinite(g.residual) && std::isfinite(g.curvatureA.k1) &&
-         std::isfinite(g.curvatureA.k2) && std::isfinite(g.curvatureB.k1) &&
-         std::isfinite(g.curvatureB.k2) && g.curvatureA.d1.allFinite() &&
-         g.curvatureB.d1.allFinite() && g.curvatureA.d2.allFinite() && g.curvatureB.d2.allFinite();
-}
-
-/// Independent check of the common-normal conditions from the shapes themselves (world frame).
-double commonNormalError(const Superquadric& A, const Pose& pa, const Superquadric& B,
-                         const Pose& pb, const ContactGeometry& g, double L) {
-  const Vec3 nA = pa.orientation * A.outwardNormal(pa.toBody(g.pointA));
-  const Vec3 nB = pb.orientation * B.outwardNormal(pb.toBody(g.pointB));
-  const Vec3 d = g.pointB - g.pointA;
-  const double onA = std::abs(A.implicitFunction(pa.toBody(g.pointA))) * L;
-  const double onB = std::abs(B.implicitFunction(pb.toBody(g.pointB))) * L;
-  return std::max({(nA + nB).norm() * L, (d - d.dot(nA) * nA).norm(), onA, onB});
-}
+using testing::allFinite;
+using testing::commonNormalError;
 
 struct Stats {
   long pairs = 0, converged = 0, nonFinite = 0, plantedFound = 0, recheckFailures = 0;

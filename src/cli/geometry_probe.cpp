@@ -39,14 +39,18 @@ json probe(const json& input) {
   out["converged"] = g.converged();
   out["iterations"] = g.iterations;
   out["residual"] = g.residual;
-  out["overlap"] = g.overlap;
+  // An overlap only where the detector found one: a common normal, a gap beyond the cut-off
+  // (a lower bound, negative) or a degenerate pair's penetration depth.
+  const bool degenerate = g.status == ContactStatus::Degenerate;
+  out["overlap"] = g.converged() || degenerate || g.status == ContactStatus::Separated ? json(g.overlap) : json(nullptr);
   const double RvolRef = referenceVolumeRadius(A.shape, B.shape);
   out["R_vol_ref"] = RvolRef;
-  if (!g.converged()) return out;
+  if (!g.converged() && !degenerate) return out;
 
   out["normal"] = toJson(g.normal);
   out["point_a"] = toJson(g.pointA);
   out["point_b"] = toJson(g.pointB);
+  if (degenerate) return out;  // no common normal: no curvatures
   out["curvatures_a"] = json::array({g.curvatureA.k1, g.curvatureA.k2});
   out["curvatures_b"] = json::array({g.curvatureB.k1, g.curvatureB.k2});
   out["directions_a"] = json::array({toJson(g.curvatureA.d1), toJson(g.curvatureA.d2)});

@@ -350,6 +350,13 @@ int runScene(const std::string& scenePath, fs::path outDir, int threads, const s
   std::printf("detector: %lld calls, %.2f iterations per call, %lld unresolved, %lld deep overlaps\n",
               st.detectorCalls, st.detectorCalls ? static_cast<double>(st.detectorIterations) / st.detectorCalls : 0.0,
               st.detectorFailures, st.deepOverlaps);
+  if (st.detectorFailures > 0) {
+    std::printf("  unresolved by status:");
+    for (int k = 0; k < contactStatusCount; ++k) {
+      if (st.failuresByStatus[k]) std::printf(" %lld %s;", st.failuresByStatus[k], describe(static_cast<ContactStatus>(k)));
+    }
+    std::printf("\n");
+  }
   std::printf("final: solid fraction %.4f (bulk slab %.3g m), mean coordination %.3f (%.3f without rattlers), bed height %.4g m\n",
               m.solidFraction, m.slabHeight, m.meanCoordination, m.meanCoordinationNonRattlers, m.bedHeight);
   if (m.betweenWallsFraction > 0.0) std::printf("final: solid fraction between the walls %.4f\n", m.betweenWallsFraction);

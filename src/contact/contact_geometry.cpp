@@ -10,6 +10,7 @@ const char* describe(ContactStatus status) {
     case ContactStatus::Stalled: return "not converged: residual could not be reduced";
     case ContactStatus::WrongBranch: return "not converged: solution on the far side of a body";
     case ContactStatus::NonFinite: return "not converged: non-finite value (degenerate input)";
+    case ContactStatus::Degenerate: return "degenerate: centres coincide or one lies inside the other body";
   }
   return "unknown status";
 }

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <vector>
 
 #include "sqdem/geometry/oriented_box.hpp"
 
@@ -198,8 +199,12 @@ ContactGeometry sphereSphere(const Superquadric& A, const Pose& poseA, const Sup
   const double rA = A.a(), rB = B.a();
   if (distance - rA - rB > settings.cutoff) return separated(distance - rA - rB);
   ContactGeometry g;
-  if (!(distance > 0.0)) {
-    g.status = ContactStatus::NonFinite;  // coincident centres: no normal
+  if (!(distance > 0.0)) {  // coincident centres: any direction separates them by rA + rB
+    g.status = ContactStatus::Degenerate;
+    g.normal = Vec3::UnitZ();
+    g.overlap = rA + rB;
+    g.pointA = poseA.position + rA * g.normal;
+    g.pointB = poseB.position - rB * g.normal;
     return g;
   }
   g.status = ContactStatus::Converged;
@@ -283,6 +288,7 @@ ContactGeometry newtonSolve(const PairFrame& f, const Pose& poseA, const Vec3& p
       g.status = ContactStatus::Separated;
     }
   }
+  if (!g.converged() && g.status != ContactStatus::Separated) g.overlap = 0.0;  // an unsolved pair has no overlap
   return g;
 }
 
@@ -292,6 +298,85 @@ constexpr int warmIterationBudget = 8;
 /// A solve that found the pair's common normal (touching, or separated by its gap).
 bool settled(const ContactGeometry& g) {
   return g.status == ContactStatus::Converged || g.status == ContactStatus::Separated;
+}
+
+/// Starting directions of the global stage: the line of centres, the body axes of A and B and
+/// A's diagonals (both signs), ordered by their support gap, smallest (deepest) first.
+std::vector<SupportPair> rankedStarts(const PairFrame& f) {
+  std::vector<Vec3> directions;
+  if (f.c.norm() > 0.0) directions.push_back(f.c.normalized());
+  for (int k = 0; k < 3; ++k) {
+    directions.push_back(Vec3::Unit(k));
+    directions.push_back(f.R.col(k));
+  }
+  for (const double x : {-1.0, 1.0}) {
+    for (const double y : {-1.0, 1.0}) directions.push_back(Vec3(x, y, 1.0).normalized());
+  }
+  std::vector<SupportPair> starts;
+  for (const Vec3& d : directions) {
+    starts.push_back(supportPair(f, d));
+    starts.push_back(supportPair(f, -d));
+  }
+  std::stable_sort(starts.begin(), starts.end(), [](const SupportPair& x, const SupportPair& y) { return x.gap < y.gap; });
+  return starts;
+}
+
+/// The minimum of the support gap over all directions from the ranked starts: for convex
+/// bodies the penetration depth of the Minkowski difference (the answer for degenerate pairs).
+SupportPair globalSupportMinimum(const PairFrame& f, int& iterations) {
+  SupportPair best = supportPair(f, Vec3::UnitZ());
+  bool first = true;
+  for (const SupportPair& start : rankedStarts(f)) {
+    const SupportPair s = minimiseSupportGap(f, start.normal, 1e-7, 400);
+    iterations += s.iterations;
+    if (first || s.gap < best.gap) best = s;
+    first = false;
+  }
+  return best;
+}
+
+/// A pair the common-normal model cannot describe: coincident centres, or a centre inside the
+/// other body.
+bool degenerate(const PairFrame& f) {
+  return f.c.norm() <= 1e-9 * f.lengthScale || f.A.gauge(f.c) < 1.0 || f.B.gauge(f.toB(Vec3::Zero())) < 1.0;
+}
+
+/// Cold solve from startNormal: support-gap descent then Newton; a longer descent; then the
+/// global stage (descents from the best-ranked starting directions, each polished by Newton).
+ContactGeometry coldSolve(const PairFrame& f, const Pose& poseA, const Vec3& startNormal, int earlierIterations,
+                          const DetectorSettings& settings) {
+  if (degenerate(f)) {
+    int iterations = earlierIterations;
+    const SupportPair depth = globalSupportMinimum(f, iterations);
+    ContactGeometry g;
+    g.status = ContactStatus::Degenerate;
+    g.normal = poseA.rotation() * depth.normal;
+    g.overlap = depth.gap;  // the support "gap" n.(pA - pB) is the overlap along n
+    g.pointA = poseA.toWorld(depth.pointA);
+    g.pointB = poseA.toWorld(depth.pointB);
+    g.localPointA = depth.pointA;
+    g.localPointB = f.toB(depth.pointB);
+    g.iterations = iterations;
+    return g;
+  }
+  const SupportPair guess = minimiseSupportGap(f, startNormal);
+  ContactGeometry g = newtonSolve(f, poseA, guess.pointA, guess.pointB, earlierIterations + guess.iterations, settings);
+  if (settled(g)) return g;
+  // Deep overlaps: the Newton basin is narrower, so descend the support gap much further (its
+  // minimum is itself a common-normal pair) before the second Newton attempt.
+  const SupportPair closer = minimiseSupportGap(f, guess.normal, 1e-7, 400);
+  g = newtonSolve(f, poseA, closer.pointA, closer.pointB, g.iterations + closer.iterations, settings);
+  if (settled(g)) return g;
+  // Global stage: a start in another basin (elongated or blocky bodies whose line of centres
+  // points far from the least-penetration normal).
+  constexpr int globalStarts = 4;
+  const std::vector<SupportPair> starts = rankedStarts(f);
+  for (int k = 0; k < globalStarts && k < static_cast<int>(starts.size()); ++k) {
+    const SupportPair s = minimiseSupportGap(f, starts[k].normal, 1e-7, 400);
+    g = newtonSolve(f, poseA, s.pointA, s.pointB, g.iterations + s.iterations, settings);
+    if (settled(g)) return g;
+  }
+  return g;
 }
 
 ContactGeometry solve(const Superquadric& A, const Pose& poseA, const Superquadric& B,
@@ -314,22 +399,15 @@ ContactGeometry solve(const Superquadric& A, const Pose& poseA, const Superquadr
 
   if (previous != nullptr && previous->converged()) {
     // Warm: Newton from the previous points; if that does not settle quickly (a contact that
-    // jumps across a flat face), descend the support gap from the previous normal instead.
+    // jumps across a flat face), a cold solve from the previous normal instead.
     DetectorSettings quick = settings;
     quick.maxIterations = std::min(settings.maxIterations, warmIterationBudget);
-    ContactGeometry g = newtonSolve(f, poseA, previous->localPointA, f.fromB(previous->localPointB), 0, quick);
+    const ContactGeometry g = newtonSolve(f, poseA, previous->localPointA, f.fromB(previous->localPointB), 0, quick);
     if (settled(g)) return g;
-    const SupportPair guess = minimiseSupportGap(f, A.outwardNormal(previous->localPointA));
-    return newtonSolve(f, poseA, guess.pointA, guess.pointB, g.iterations + guess.iterations, settings);
+    return coldSolve(f, poseA, A.outwardNormal(previous->localPointA), g.iterations, settings);
   }
   const double distance = f.c.norm();
-  const SupportPair guess = minimiseSupportGap(f, distance > 0.0 ? Vec3(f.c / distance) : Vec3::UnitX());
-  const ContactGeometry g = newtonSolve(f, poseA, guess.pointA, guess.pointB, guess.iterations, settings);
-  if (settled(g)) return g;
-  // Deep overlaps: the Newton basin is narrower, so descend the support gap much further (its
-  // minimum is itself a common-normal pair) before the second Newton attempt.
-  const SupportPair closer = minimiseSupportGap(f, guess.normal, 1e-7, 400);
-  return newtonSolve(f, poseA, closer.pointA, closer.pointB, g.iterations + closer.iterations, settings);
+  return coldSolve(f, poseA, distance > 0.0 ? Vec3(f.c / distance) : Vec3::UnitX(), 0, settings);
 }
 
 }  // namespace

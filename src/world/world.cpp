@@ -207,9 +207,10 @@ void World::computeForces() {
   timing_.detection += seconds(lawStart - detected);
   // Laws, and per contact the step's statistics and whether it carries force.
   long long calls = 0, iterations = 0, failures = 0, deep = 0;
+  long long byStatus[contactStatusCount] = {};
   acting_.resize(pairs_.size());
   loads_.resize(pairs_.size());
-#pragma omp parallel for schedule(dynamic, 64) reduction(+ : calls, iterations, failures, deep)
+#pragma omp parallel for schedule(dynamic, 64) reduction(+ : calls, iterations, failures, deep, byStatus[:contactStatusCount])
   for (std::ptrdiff_t k = 0; k < count; ++k) {
     Contact& c = pairs_[k];
     const bool acting = interacting(c);  // else a gap, kept as the next step's warm start or cull
@@ -224,7 +225,10 @@ void World::computeForces() {
       ++calls;
       iterations += g.iterations;
     }
-    if (g.status != ContactStatus::Converged && g.status != ContactStatus::Separated) ++failures;
+    if (g.status != ContactStatus::Converged && g.status != ContactStatus::Separated) {
+      ++failures;
+      ++byStatus[static_cast<int>(g.status)];
+    }
     if (!g.converged() && c.separation <= 0.0) c = candidate(c.a, c.b, c.shift);  // nothing to warm-start or cull
     acting_[k] = acting;
     if (!acting) continue;
@@ -234,6 +238,7 @@ void World::computeForces() {
   statistics_.detectorCalls += calls;
   statistics_.detectorIterations += iterations;
   statistics_.detectorFailures += failures;
+  for (int k = 0; k < contactStatusCount; ++k) statistics_.failuresByStatus[k] += byStatus[k];
   statistics_.deepOverlaps += deep;
   const auto reduction = Clock::now();
   timing_.law += seconds(reduction - lawStart);

@@ -111,7 +111,7 @@ void World::readState(CheckpointReader& in) {
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     const Contact& c = pairs[k];
     require(c.a < n && (c.onWall() ? (c.b & ~wallFlag) < walls : c.b < n && c.a != c.b), "contact index");
-    require(static_cast<unsigned>(c.geometry.status) <= static_cast<unsigned>(ContactStatus::NonFinite), "contact status");
+    require(static_cast<unsigned>(c.geometry.status) <= static_cast<unsigned>(ContactStatus::Degenerate), "contact status");
     require(k == 0 || pairs[k - 1].key() < c.key(), "contact order");
   }
   for (std::size_t k = 0; k < interacting.size(); ++k) {

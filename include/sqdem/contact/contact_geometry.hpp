@@ -13,8 +13,14 @@ enum class ContactStatus {
   MaxIterations,  ///< iteration limit reached before the tolerance
   Stalled,        ///< the safeguarded Newton iteration could not reduce the residual further
   WrongBranch,    ///< converged to a common-normal pair on the far side of a body
-  NonFinite,      ///< a non-finite number appeared (degenerate input, e.g. coincident centres)
+  NonFinite,      ///< a non-finite number appeared (degenerate input)
+  /// Coincident centres or a centre inside the other body: no reliable common normal. The
+  /// answer is the penetration depth of the Minkowski difference (the minimum of the support
+  /// gap over all directions, from a global search): normal, overlap and support points are
+  /// set, curvatures are not.
+  Degenerate,
 };
+inline constexpr int contactStatusCount = static_cast<int>(ContactStatus::Degenerate) + 1;
 
 /// One-line reason for a status, for logs and reports.
 const char* describe(ContactStatus status);

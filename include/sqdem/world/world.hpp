@@ -8,6 +8,7 @@
 // its contacts in their key order (also in parallel), so results do not depend on the number
 // of threads.
 
+#include <array>
 #include <cstdint>
 #include <iosfwd>
 #include <optional>
@@ -73,6 +74,8 @@ struct WorldStatistics {
   long long detectorCalls = 0;
   long long detectorIterations = 0;
   long long detectorFailures = 0;  ///< statuses other than Converged/Separated (contact skipped)
+  /// detectorFailures by ContactStatus (index = the status's value).
+  std::array<long long, contactStatusCount> failuresByStatus{};
   long long deepOverlaps = 0;      ///< contacts with overlap > 0.5 R_vol (time step too large?)
 };
 
