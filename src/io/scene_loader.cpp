@@ -19,13 +19,6 @@ namespace {
 /// "where.key", or "key" at the top level.
 std::string keyPath(const std::string& where, const std::string& key) { return where.empty() ? key : where + "." + key; }
 
-/// A number for a message: 1e+07 rather than 10000000.000000.
-std::string shortNumber(double x) {
-  std::ostringstream s;
-  s << x;
-  return s.str();
-}
-
 class Reader {
  public:
   explicit Reader(std::string file) : file_(std::move(file)) {}
@@ -496,6 +489,12 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
 }
 
 }  // namespace
+
+std::string shortNumber(double x) {
+  std::ostringstream s;
+  s << x;
+  return s.str();
+}
 
 Scene loadScene(const std::string& path) {
   std::error_code error;

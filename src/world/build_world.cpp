@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <string>
 #include <numbers>
 #include <random>
@@ -30,12 +29,6 @@ Superquadric sampleShape(std::mt19937_64& rng, const ShapeFamily& f) {
   const double unit = Superquadric(1.0, b, c, f.n1, f.n2).volumeEquivalentRadius();
   const double s = radius / unit;
   return Superquadric(s, s * b, s * c, f.n1, f.n2);
-}
-
-std::string shortNumber(double x) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.4g", x);
-  return buffer;
 }
 
 Vec3 minimumImage(Vec3 d, const Domain& domain) {

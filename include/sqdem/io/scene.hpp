@@ -111,6 +111,9 @@ struct Scene {
   OutputSpec output;
 };
 
+/// A number for a scene message: 1e+07 rather than 10000000.000000.
+std::string shortNumber(double x);
+
 /// Reads and validates a scene file; throws SceneError("file:line: key: message").
 Scene loadScene(const std::string& path);
 
