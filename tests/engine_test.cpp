@@ -10,8 +10,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "sqdem/io/scene.hpp"
-#include "sqdem/world/build_world.hpp"
+#include "sqdem/scene/scene_loader.hpp"
+#include "sqdem/scene/build_world.hpp"
 #include "sqdem/world/checkpoint_file.hpp"
 #include "sqdem/world/packing_measures.hpp"
 

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "sqdem/mechanics/elliptic.hpp"
+#include "sqdem/dynamics/rayleigh_time.hpp"
 #include "sqdem/mechanics/nan_adhesive.hpp"
 #include "sqdem/mechanics/sticking_velocity.hpp"
 

@@ -84,8 +84,4 @@ NanState NanAdhesivePlastic::evaluate(double overlap, NanHistory& history) const
 
 double nanCriticalTimeStep(double mass, double stiffness) { return 2.0 * std::sqrt(mass / stiffness); }
 
-double rayleighTimeStep(double radius, double density, double shearModulus, double poisson) {
-  return pi * radius * std::sqrt(density / shearModulus) / (0.1631 * poisson + 0.8766);
-}
-
 }  // namespace sqdem

@@ -1,4 +1,4 @@
-#include "sqdem/world/build_world.hpp"
+#include "sqdem/scene/build_world.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,6 +7,7 @@
 #include <random>
 
 #include "sqdem/mechanics/damping.hpp"
+#include "sqdem/scene/scene_loader.hpp"
 
 namespace sqdem {
 namespace {

@@ -1,7 +1,7 @@
-// sceneFingerprint (scene.hpp): every field of the validated scene but its path and output
+// sceneFingerprint (scene_fingerprint.hpp): every field of the validated scene but its path and output
 // settings, fed in declaration order to a CRC-64. A new Scene field must be added here.
 
-#include "sqdem/io/scene.hpp"
+#include "sqdem/scene/scene_fingerprint.hpp"
 #include "sqdem/world/checkpoint_file.hpp"
 
 namespace sqdem {
@@ -46,7 +46,7 @@ std::uint64_t sceneFingerprint(const Scene& scene) {
     h.all(h.n(in.count), in.solidFraction, h.n(in.shape), h.n(in.material), in.lo, in.hi, h.n(in.randomOrientation));
   }
   for (const StageSpec& st : scene.stages) {
-    h.all(st.name, st.duration, st.kineticEnergyRatio, st.wallPressure, h.n(st.pressureWall), st.minimumDuration,
+    h.all(st.name, st.duration, st.kineticEnergyRatio, st.wallPressure, h.n(st.pressureWall), st.minimumDuration, st.velocityScale,
           st.viscousDamping, h.n(st.wall.value_or(~std::size_t{0})), st.wallVelocity,
           h.n(st.servoWall.value_or(~std::size_t{0})), st.servo.pressure, st.servo.maxSpeed);
     for (const auto& [t, x] : st.wallPath.points) h.all(t, x);

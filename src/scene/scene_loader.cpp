@@ -11,7 +11,7 @@
 #include <sstream>
 
 #include "sqdem/geometry/superquadric.hpp"
-#include "sqdem/io/scene.hpp"
+#include "sqdem/scene/scene_loader.hpp"
 
 namespace sqdem {
 namespace {
@@ -429,13 +429,20 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
     spec.viscousDamping = r.number(st, "viscous_damping", where, 0.0);
     if (spec.viscousDamping < 0.0) r.fail(st["viscous_damping"], where + ".viscous_damping", "must be >= 0 (1/s)");
     if (const YAML::Node stop = st["stop"]) {
-      r.allowOnly(stop, where + ".stop", {"kinetic_energy_ratio", "wall_pressure", "wall", "after"});
+      r.allowOnly(stop, where + ".stop", {"kinetic_energy_ratio", "velocity_scale", "wall_pressure", "wall", "after"});
       if (!stop["kinetic_energy_ratio"] && !stop["wall_pressure"]) {
         r.fail(stop, where + ".stop", "needs kinetic_energy_ratio and/or wall_pressure (with wall)");
       }
       if (stop["kinetic_energy_ratio"]) {
         spec.kineticEnergyRatio = r.positive(stop, "kinetic_energy_ratio", where + ".stop", "-");
-        if (scene.gravity.norm() == 0.0) r.fail(stop, where + ".stop.kinetic_energy_ratio", "needs gravity (it is scaled by sum m |g| R_vol)");
+        if (stop["velocity_scale"]) {
+          spec.velocityScale = r.positive(stop, "velocity_scale", where + ".stop", "m/s");
+        } else if (scene.gravity.norm() == 0.0) {
+          r.fail(stop, where + ".stop.kinetic_energy_ratio",
+                 "without gravity needs velocity_scale (m/s): the ratio is then E_kin / sum m v_s^2 / 2");
+        }
+      } else if (stop["velocity_scale"]) {
+        r.fail(stop["velocity_scale"], where + ".stop.velocity_scale", "belongs to kinetic_energy_ratio");
       }
       if (stop["wall_pressure"]) {
         spec.wallPressure = r.positive(stop, "wall_pressure", where + ".stop", "Pa");

@@ -6,9 +6,9 @@
 #include <stdexcept>
 
 #include "sqdem/dynamics/integrator.hpp"
+#include "sqdem/dynamics/rayleigh_time.hpp"
 #include "sqdem/mechanics/collision_time.hpp"
 #include "sqdem/mechanics/damping.hpp"
-#include "sqdem/mechanics/nan_adhesive.hpp"
 
 namespace sqdem {
 namespace {

@@ -18,11 +18,12 @@ check "resumed CSV starts past step 10000" awk -F, 'NR == 2 { exit !($2 > 10000)
 # An occupied --out: refused, nothing touched; --overwrite replaces sqdem's own files only.
 before=$(cksum < "$a/small_bed.csv")
 echo keep > "$a/notes.txt"
+echo keep > "$a/small_bed_large.csv"  # another scene's log with the same prefix
 expect_error "occupied --out" 1 "already holds .* --overwrite" "$sqdem" run "$scene" --out "$a"
 check "refused run left the CSV alone" test "$(cksum < "$a/small_bed.csv")" = "$before"
 check "overwrite" "$sqdem" run "$scene" --out "$a" --overwrite > /dev/null
 check "overwrite reproduces the run" test "$(tail -1 "$a/small_bed.csv")" = "$final"
-check "overwrite keeps other files" test -f "$a/notes.txt"
+check "overwrite keeps other files" test -f "$a/notes.txt" -a -f "$a/small_bed_large.csv"
 check "overwrite removed the resumed files of the old run" test ! -e "$a/small_bed_from_step10000.csv"
 
 # SIGINT: finishes the step, writes log and checkpoint, says how to resume, exits 130.

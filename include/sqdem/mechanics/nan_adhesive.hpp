@@ -85,8 +85,7 @@ class NanAdhesivePlastic {
   double kEl_, kP_, kCl_, fCe_, fY_, alpha0_, alphaY_, wJkr_, wY_;
 };
 
-/// 000 Eq. 68: 2 sqrt(m/k_e) (s); Eq. 71: Rayleigh time pi R sqrt(rho/G)/(0.1631 nu + 0.8766).
+/// 000 Eq. 68: 2 sqrt(m/k_e) (s) (the Rayleigh time of Eq. 71 is in dynamics/rayleigh_time.hpp).
 double nanCriticalTimeStep(double mass, double stiffness);
-double rayleighTimeStep(double radius, double density, double shearModulus, double poisson);
 
 }  // namespace sqdem

@@ -4,7 +4,7 @@
 // walls respected) with random orientations (uniform on SO(3)), sets the interaction table and
 // the time step. Deterministic for a given scene seed.
 
-#include "sqdem/io/scene.hpp"
+#include "sqdem/scene/scene.hpp"
 #include "sqdem/world/world.hpp"
 
 namespace sqdem {

@@ -1,7 +1,7 @@
 #pragma once
-// A validated scene description (what a scene file declares; see examples/*.yaml and README.md
-// "Scene files" for every key with its unit). Loading checks everything before anything runs:
-// errors name the file, line, key and what is allowed (SceneError).
+// A validated scene description: what a scene file declares (see examples/*.yaml and README.md
+// "Scene files" for every key with its unit). The scene layer reads it (scene_loader.hpp), builds
+// a World from it (build_world.hpp) and runs its stages (stage_runner.hpp).
 
 #include <array>
 #include <cstdint>
@@ -13,7 +13,7 @@
 #include "sqdem/mechanics/elliptic.hpp"
 #include "sqdem/world/contact_model.hpp"
 #include "sqdem/world/domain.hpp"
-#include "sqdem/world/wall_path.hpp"
+#include "sqdem/scene/wall_path.hpp"
 #include "sqdem/world/world.hpp"
 
 namespace sqdem {
@@ -70,7 +70,9 @@ struct InsertionSpec {
 struct StageSpec {
   std::string name;
   double duration = 0.0;            ///< simulated time limit (s)
-  double kineticEnergyRatio = 0.0;  ///< stop when E_kin / (sum m |g| R_vol) falls below (0: off)
+  double kineticEnergyRatio = 0.0;  ///< stop when E_kin / scale falls below (0: off), scale =
+                                    ///< sum m |g| R_vol, or sum m v_s^2 / 2 with a velocity scale
+  double velocityScale = 0.0;       ///< v_s (m/s) of that scale (0: use gravity)
   double wallPressure = 0.0;        ///< stop when wall `pressureWall` carries this pressure (Pa, 0: off)
   std::size_t pressureWall = 0;
   double minimumDuration = 0.0;     ///< the stop criteria are checked only after this (s)
@@ -110,15 +112,5 @@ struct Scene {
   std::vector<StageSpec> stages;
   OutputSpec output;
 };
-
-/// A number for a scene message: 1e+07 rather than 10000000.000000.
-std::string shortNumber(double x);
-
-/// Reads and validates a scene file; throws SceneError("file:line: key: message").
-Scene loadScene(const std::string& path);
-
-/// A hash of everything the scene declares except its path and its `output` keys: a
-/// checkpoint written by one scene is refused by another (checkpoint_file.hpp).
-std::uint64_t sceneFingerprint(const Scene& scene);
 
 }  // namespace sqdem

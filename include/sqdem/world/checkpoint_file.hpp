@@ -7,7 +7,7 @@
 //
 // The build fingerprint covers the format version and the byte layout of every record written
 // raw (a checkpoint is a restart file for the same build, not an archive); the scene fingerprint
-// is a hash of the validated scene (sceneFingerprint in io/scene.hpp). A corrupted, truncated,
+// is a hash of the validated scene (sceneFingerprint in scene/scene_fingerprint.hpp). A corrupted, truncated,
 // foreign or other-build file is refused with one message (CheckpointError) before any of its
 // payload is used.
 

@@ -1,0 +1,27 @@
+#pragma once
+// The CSV log of a run, one row written and flushed at a time (an interrupted run keeps its
+// rows). Columns: time (s), step, stage, kinetic_energy (J), contacts, mean_coordination,
+// solid_fraction, bed_height (m), detector_failures, stress_xx ... stress_yz (Pa, Love-Weber,
+// packing_measures.hpp), and per wall its z (m) and force fx, fy, fz (N).
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "sqdem/world/world.hpp"
+
+namespace sqdem {
+
+class RunLog {
+ public:
+  /// Creates (truncates) the file and writes the header; throws std::runtime_error if it cannot.
+  RunLog(const std::filesystem::path& path, std::size_t walls);
+  void row(const World& world, long step, const std::string& stage);
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
+  std::ofstream out_;
+};
+
+}  // namespace sqdem

@@ -1,0 +1,24 @@
+# Stage control on tests/scenes/small_bed.yaml: a wall moves only in the stages that move it,
+# and the kinetic-energy stop criterion works without gravity through stop.velocity_scale.
+. "$(dirname "$0")/lib.sh"
+base="$source_dir/tests/scenes/small_bed.yaml"
+
+# The lid moves down in 'pour' (10 mm/s for 10 ms) and must stand still in 'press', which does
+# not move it (CSV column 20 = wall1_z).
+sed 's/duration: 0.06/duration: 0.01\n    move_wall: {wall: 1, velocity: [0, 0, -0.01]}/; s/    move_wall: {wall: 1, velocity: \[0, 0, -0.1\]}//; s/duration: 0.02/duration: 0.005/' \
+  "$base" > "$scratch/walls.yaml"
+check "two-stage run" "$sqdem" run "$scratch/walls.yaml" --out "$scratch/walls" > /dev/null
+check "the lid moved in 'pour' and stood still in 'press'" awk -F, '
+  $3 == "pour" { last = $20 }
+  $3 == "press" { if (first == "") first = $20; if ($20 != first) moved = 1 }
+  END { printf "  lid z: end of pour %s, press %s%s\n", last, first, moved ? " (moved)" : "";
+        exit !(last < 0.012 - 9e-5 && first == last && !moved) }' "$scratch/walls/walls.csv"
+
+# Without gravity: kinetic_energy_ratio needs velocity_scale, and stops with it.
+sed 's/^gravity: .*$//' "$base" | sed 's/duration: 0.06/duration: 0.06\n    stop: {kinetic_energy_ratio: 1.0e-3}/' > "$scratch/nograv.yaml"
+expect_error "kinetic_energy_ratio without gravity or velocity_scale" 1 \
+  "'stages\[0\].stop.kinetic_energy_ratio': without gravity needs velocity_scale" "$sqdem" run "$scratch/nograv.yaml" --out "$scratch/ng"
+sed 's/stop: {kinetic_energy_ratio: 1.0e-3}/stop: {kinetic_energy_ratio: 1.0e-3, velocity_scale: 0.1}/' "$scratch/nograv.yaml" > "$scratch/vscale.yaml"
+"$sqdem" run "$scratch/vscale.yaml" --out "$scratch/vs" > "$scratch/vs.log" 2>&1
+check "velocity_scale stops the resting bed at once" grep -q "stage 'pour': t = .*kinetic energy ratio below" "$scratch/vs.log"
+finish
