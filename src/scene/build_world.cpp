@@ -163,11 +163,23 @@ World buildWorld(const Scene& scene) {
   return world;
 }
 
-double automaticTimeStep(const Scene& scene, const World& world, double fraction) {
-  // Rayleigh time scales as E^-1/2: the reduced stiffness lengthens the stable step.
+namespace {
+
+/// The smallest reduced_stiffness E_mod / E of the scene: the Rayleigh time scales as E^-1/2.
+double smallestStiffnessScale(const Scene& scene) {
   double minScale = 1.0;
   for (const InteractionSpec& in : scene.interactions) minScale = std::min(minScale, in.stiffnessScale);
-  double dt = fraction * world.rayleighTimeStep() / std::sqrt(minScale);
+  return minScale;
+}
+
+}  // namespace
+
+double rayleighTime(const Scene& scene, const World& world) {
+  return world.rayleighTimeStep() / std::sqrt(smallestStiffnessScale(scene));
+}
+
+double automaticTimeStep(const Scene& scene, const World& world, double fraction) {
+  double dt = fraction * world.rayleighTimeStep() / std::sqrt(smallestStiffnessScale(scene));
   if (scene.impactVelocity > 0.0) dt = std::min(dt, world.hertzTimeStep(scene.impactVelocity, scene.stepsPerCollision));
   return dt;
 }

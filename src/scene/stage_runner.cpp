@@ -37,11 +37,12 @@ long stageSteps(const Scene& scene, std::size_t k, double dt) {
 RunPlan planRun(const Scene& scene, const World& world) {
   RunPlan plan;
   const double stable = automaticTimeStep(scene, world, 0.2), dt = world.timeStep();
-  plan.rayleighTime = 5.0 * stable;
+  plan.rayleighTime = rayleighTime(scene, world);
   char text[320];
   if (scene.timeStep && dt > stable) {
-    std::snprintf(text, sizeof text, "'time_step': %.4g s is %.3g x the stable estimate %.4g s (0.2 x the Rayleigh "
-                  "time of the smallest particle)", dt, dt / stable, stable);
+    std::snprintf(text, sizeof text, "'time_step': %.4g s is %.3g x the stable estimate %.4g s (the automatic step: "
+                  "0.2 x the Rayleigh time of the smallest particle, at most a declared impact's collision time over "
+                  "steps_per_collision)", dt, dt / stable, stable);
     if (dt > 5.0 * stable) throw SceneError(scene.path + ": " + text + "; at most 5 x is accepted");
     plan.warnings.push_back(std::string(text) + "; the run may be unstable");
   }

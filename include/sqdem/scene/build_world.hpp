@@ -12,9 +12,12 @@ namespace sqdem {
 /// Throws SceneError (naming the insertion) when the region cannot hold the particles.
 World buildWorld(const Scene& scene);
 
-/// The automatic time step of a built world (s): `fraction` x the Rayleigh time of its smallest
-/// particle (longer by E^-1/2 under reduced stiffness), and with a declared impact_velocity at
-/// most the Hertz collision time over steps_per_collision.
+/// The Rayleigh time of the world's smallest particle (s), longer by E^-1/2 under reduced
+/// stiffness (the scene's smallest reduced_stiffness).
+double rayleighTime(const Scene& scene, const World& world);
+
+/// The automatic time step of a built world (s): `fraction` x rayleighTime, and with a declared
+/// impact_velocity at most the Hertz collision time over steps_per_collision.
 double automaticTimeStep(const Scene& scene, const World& world, double fraction);
 
 }  // namespace sqdem
