@@ -13,7 +13,7 @@
 // curvature does (line and plane contacts), which a column-pivoted QR solve tolerates.
 // Cold starts first descend the support gap h_A(n) + h_B(-n) over the unit sphere (its minimum
 // is the least-penetration common normal); if Newton does not settle from there, a longer
-// descent, then a global stage: descents from the four best of 26 ranked directions (line of
+// descent, then a global stage: descents from the four best of 22 ranked directions (line of
 // centres, both bodies' axes, A's diagonals, both signs), each polished by Newton. Warm starts
 // begin at the previous points and fall back to the cold solve. A non-converged answer carries
 // no overlap (0). Degenerate pairs (coincident centres, or a centre inside the other body) are
