@@ -10,7 +10,6 @@
 #include <fstream>
 #include <cstring>
 #include <random>
-#include <sstream>
 
 #include "sqdem/world/checkpoint_file.hpp"
 #include "sqdem/world/world.hpp"
@@ -45,9 +44,9 @@ World makeWorld() {
 }
 
 std::string payloadOf(const World& world) {
-  std::ostringstream out(std::ios::binary);
+  CheckpointWriter out;
   world.writeState(out);
-  return out.str();
+  return out.bytes();
 }
 
 std::string readFile(const fs::path& p) {

@@ -8,7 +8,6 @@
 #include <filesystem>
 #include <numbers>
 #include <fstream>
-#include <sstream>
 
 #include "sqdem/scene/scene_loader.hpp"
 #include "sqdem/scene/build_world.hpp"
@@ -122,12 +121,12 @@ TEST(Engine, RestingBedWallForceEqualsWeight) {
 TEST(Engine, CheckpointRestartContinuesBitwise) {
   const Scene scene = loadScene(writeScene("bed", bedScene));
   World original = pouredBed(scene, 50.0, 30000);
-  std::stringstream checkpoint;
+  CheckpointWriter checkpoint;
   original.writeState(checkpoint);
   for (int s = 0; s < 5000; ++s) original.step();
 
   World resumed = buildWorld(scene);  // same scene: same shapes and laws, fresh state
-  const std::string payload = checkpoint.str();
+  const std::string& payload = checkpoint.bytes();
   CheckpointReader reader(payload);
   resumed.readState(reader);
   for (int s = 0; s < 5000; ++s) resumed.step();

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <optional>
 #include <vector>
 
 #include "sqdem/geometry/oriented_box.hpp"
@@ -324,15 +325,13 @@ std::vector<SupportPair> rankedStarts(const PairFrame& f) {
 /// The minimum of the support gap over all directions from the ranked starts: for convex
 /// bodies the penetration depth of the Minkowski difference (the answer for degenerate pairs).
 SupportPair globalSupportMinimum(const PairFrame& f, int& iterations) {
-  SupportPair best = supportPair(f, Vec3::UnitZ());
-  bool first = true;
+  std::optional<SupportPair> best;
   for (const SupportPair& start : rankedStarts(f)) {
     const SupportPair s = minimiseSupportGap(f, start.normal, 1e-7, 400);
     iterations += s.iterations;
-    if (first || s.gap < best.gap) best = s;
-    first = false;
+    if (!best || s.gap < best->gap) best = s;
   }
-  return best;
+  return *best;  // rankedStarts is never empty
 }
 
 /// A pair the common-normal model cannot describe: coincident centres, or a centre inside the

@@ -1,30 +1,20 @@
 #include "sqdem/scene/run_checkpoint.hpp"
 
 #include <cmath>
-#include <sstream>
 
 #include "sqdem/scene/scene_fingerprint.hpp"
 #include "sqdem/world/checkpoint_file.hpp"
 
 namespace sqdem {
-namespace {
-
-template <typename T>
-void put(std::ostream& out, const T& value) {
-  out.write(reinterpret_cast<const char*>(&value), sizeof value);
-}
-
-}  // namespace
-
 void writeRunCheckpoint(const std::filesystem::path& path, const Scene& scene, const RunProgress& progress,
                         const World& world) {
-  std::ostringstream out(std::ios::binary);
-  put(out, progress.stage);
-  put(out, progress.stepInStage);
-  put(out, progress.stageStart);
-  put(out, progress.totalSteps);
+  CheckpointWriter out;
+  out.put(progress.stage);
+  out.put(progress.stepInStage);
+  out.put(progress.stageStart);
+  out.put(progress.totalSteps);
   world.writeState(out);
-  writeCheckpointFile(path, sceneFingerprint(scene), out.str());
+  writeCheckpointFile(path, sceneFingerprint(scene), out.bytes());
 }
 
 RunProgress readRunCheckpoint(const std::filesystem::path& path, const Scene& scene, World& world) {

@@ -26,11 +26,6 @@ std::uint32_t crc32(std::string_view data) {
 }
 
 template <typename T>
-void append(std::string& out, T value) {
-  out.append(reinterpret_cast<const char*>(&value), sizeof value);
-}
-
-template <typename T>
 T field(std::string_view header, std::size_t& at) {
   T value;
   std::memcpy(&value, header.data() + at, sizeof value);
@@ -69,14 +64,14 @@ std::uint64_t buildFingerprint() {
 }
 
 void writeCheckpointFile(const std::filesystem::path& path, std::uint64_t sceneFingerprint, std::string_view payload) {
-  std::string file(magic, sizeof magic);
-  append(file, formatVersion);
-  append(file, buildFingerprint());
-  append(file, sceneFingerprint);
-  append(file, static_cast<std::uint64_t>(payload.size()));
-  append(file, crc32(payload));
-  file.append(payload);
-  writeFileAtomically(path, file);
+  CheckpointWriter header;
+  header.put(magic);
+  header.put(formatVersion);
+  header.put(buildFingerprint());
+  header.put(sceneFingerprint);
+  header.put(static_cast<std::uint64_t>(payload.size()));
+  header.put(crc32(payload));
+  writeFileAtomically(path, header.bytes() + std::string(payload));
 }
 
 std::string readCheckpointFile(const std::filesystem::path& path, std::uint64_t sceneFingerprint) {

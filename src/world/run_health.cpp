@@ -34,10 +34,10 @@ std::string RunHealth::afterStep(const World& world) {
   for (const Wall& w : world.walls()) wallWork_ += std::abs(w.force.dot(w.velocity)) * world.timeStep();
   if (++steps_ % checkEvery != 0) return {};
   char text[256];
-  if (!finiteState(world.particles()) || !std::isfinite(world.kineticEnergy())) {
+  const double energy = world.kineticEnergy();
+  if (!finiteState(world.particles()) || !std::isfinite(energy)) {
     return "non-finite particle state (NaN or inf in positions, velocities or forces)";
   }
-  const double energy = world.kineticEnergy();
   if (energy > 10.0 * budget()) {
     std::snprintf(text, sizeof text, "runaway energy: E_kin = %.3g J exceeds 10 x the %.3g J the initial state, gravity "
                   "and walls can supply", energy, budget());

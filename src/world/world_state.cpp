@@ -5,8 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <ostream>
-#include <type_traits>
 
 #include "sqdem/world/checkpoint_file.hpp"
 #include "sqdem/world/world.hpp"
@@ -14,44 +12,31 @@
 namespace sqdem {
 namespace {
 
-template <typename T>
-void put(std::ostream& out, const T& value) {
-  static_assert(std::is_trivially_destructible_v<T>);
-  out.write(reinterpret_cast<const char*>(&value), sizeof(T));
-}
-
-template <typename T>
-void putVector(std::ostream& out, const std::vector<T>& v) {
-  put(out, static_cast<std::uint64_t>(v.size()));
-  out.write(reinterpret_cast<const char*>(v.data()), static_cast<std::streamsize>(v.size() * sizeof(T)));
-}
-
 void require(bool ok, const char* what) {
   if (!ok) throw CheckpointError(std::string("checkpoint is corrupt (") + what + ")");
 }
 
 }  // namespace
 
-void World::writeState(std::ostream& out) const {
-  put(out, static_cast<std::uint64_t>(particles_.size()));
-  put(out, static_cast<std::uint64_t>(walls_.size()));
-  ParticleStore::forEachArray(particles_, [&](const auto& array) { putVector(out, array); });
-  putVector(out, boundingRadius_);
-  putVector(out, walls_);
-  putVector(out, wallReference_);
-  putVector(out, pairs_);
-  putVector(out, interacting_);
-  putVector(out, neighbours_.referencePositions());
-  putVector(out, neighbours_.pairs());
-  put(out, neighbours_.builds());
-  put(out, statistics_);
-  put(out, gravity_);
-  put(out, viscousDamping_);
-  put(out, reorderInterval_);
-  put(out, dt_);
-  put(out, time_);
-  put(out, forcesCurrent_);
-  if (!out) throw std::runtime_error("cannot write the checkpoint");
+void World::writeState(CheckpointWriter& out) const {
+  out.put(static_cast<std::uint64_t>(particles_.size()));
+  out.put(static_cast<std::uint64_t>(walls_.size()));
+  ParticleStore::forEachArray(particles_, [&](const auto& array) { out.putVector(array); });
+  out.putVector(boundingRadius_);
+  out.putVector(walls_);
+  out.putVector(wallReference_);
+  out.putVector(pairs_);
+  out.putVector(interacting_);
+  out.putVector(neighbours_.referencePositions());
+  out.putVector(neighbours_.pairs());
+  out.put(neighbours_.builds());
+  out.put(statistics_);
+  out.put(gravity_);
+  out.put(viscousDamping_);
+  out.put(reorderInterval_);
+  out.put(dt_);
+  out.put(time_);
+  out.put(forcesCurrent_);
 }
 
 void World::readState(CheckpointReader& in) {

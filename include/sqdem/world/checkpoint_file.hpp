@@ -40,6 +40,27 @@ class Fingerprint {
   std::uint64_t state_ = 0;
 };
 
+/// Writes a checkpoint payload value by value (CheckpointReader reads it back).
+class CheckpointWriter {
+ public:
+  template <typename T>
+  void put(const T& value) {
+    static_assert(std::is_trivially_destructible_v<T>);  // plain data (Eigen types are not trivially copyable by trait)
+    bytes_.append(reinterpret_cast<const char*>(&value), sizeof(T));
+  }
+  /// A vector as its size then its elements.
+  template <typename T>
+  void putVector(const std::vector<T>& v) {
+    static_assert(std::is_trivially_destructible_v<T>);
+    put(static_cast<std::uint64_t>(v.size()));
+    bytes_.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
+  }
+  const std::string& bytes() const { return bytes_; }
+
+ private:
+  std::string bytes_;
+};
+
 /// Reads a checkpoint payload value by value: every read is bounded by the bytes left, so a
 /// corrupt count can neither read past the end nor allocate more than the file holds.
 class CheckpointReader {

@@ -25,6 +25,7 @@
 namespace sqdem {
 
 class CheckpointReader;
+class CheckpointWriter;
 
 struct Material {
   double youngsModulus = 0.0;  ///< E (Pa)
@@ -142,7 +143,7 @@ class World {
   /// time, statistics) in a binary form for the same build; the static parts (shapes,
   /// materials, laws) come from the scene. Restoring into a world built from the same scene
   /// continues bit for bit (world_state.cpp).
-  void writeState(std::ostream& out) const;
+  void writeState(CheckpointWriter& out) const;
   /// Restores a state written by writeState; throws CheckpointError (checkpoint_file.hpp) if it
   /// does not match this world or any count or index is out of range. The world is unchanged
   /// when it throws.
