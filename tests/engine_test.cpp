@@ -142,31 +142,46 @@ TEST(Engine, CheckpointRestartContinuesBitwise) {
   EXPECT_THROW(resumed.readState(garbage), CheckpointError);
 }
 
-// Force control: a servo-controlled lid holds its target pressure on a settled bed, and the
-// bottom wall then carries the weight plus the lid's force (static equilibrium).
-TEST(Engine, ServoWallHoldsItsPressure) {
+// Force control: a servo-controlled lid reaches its target pressure on a settled bed and holds
+// it within 1 % over the next 20000 steps; the bottom wall then carries the weight plus the
+// lid's force (static equilibrium). At max_speed 0.02 m/s and at 1 m/s (50 x; before the servo
+// read the elastic load and limited its step by the contact stiffness, the lid chattered in and
+// out of the bed at 0.2 m/s and 1 m/s and never held the target: world.hpp, WallServo).
+class ServoWall : public testing::TestWithParam<double> {};
+
+TEST_P(ServoWall, ReachesAndHoldsItsPressure) {
   const std::string lidded = replaced(bedScene, "  - {point: [0, 0, 0], normal: [0, 0, 1], material: glass}\n",
                                       "  - {point: [0, 0, 0], normal: [0, 0, 1], material: glass}\n"
                                       "  - {point: [0, 0, 11.8e-3], normal: [0, 0, -1], material: glass}\n");
   World world = pouredBed(loadScene(writeScene("lid", lidded)), 200.0, 40000);
   world.setViscousDamping(0.0);
   const double target = 50.0;  // Pa, about twice the bed's own weight per area
-  world.walls()[1].servo = WallServo{target, 0.02};
+  world.walls()[1].servo = WallServo{target, GetParam()};
   double weight = 0.0;
   for (double m : world.particles().mass) weight += m * 9.81;
   double pressureError = 1.0, balance = 1.0;
-  for (int s = 0; s < 300000 && (pressureError > 1e-3 || balance > 1e-3); ++s) {
+  int s = 0;
+  for (; s < 300000 && (pressureError > 1e-3 || balance > 1e-3); ++s) {
     world.step();
     if (s % 1000 == 0) {
       pressureError = std::abs(world.wallPressure(1) / target - 1.0);
       balance = std::abs((-world.walls()[0].force.z() - world.walls()[1].force.z()) / weight - 1.0);
     }
   }
-  std::printf("lid pressure %.4f Pa (target %.1f), bottom force / (weight + lid force) - 1 = %.2g\n",
-              world.wallPressure(1), target, balance);
+  double worstHeld = 0.0;
+  for (int h = 0; h < 20000; ++h) {
+    world.step();
+    worstHeld = std::max(worstHeld, std::abs(world.wallPressure(1) / target - 1.0));
+  }
+  std::printf("max_speed %.2f m/s: target reached after %d steps, lid pressure %.4f Pa (target %.1f), "
+              "bottom force / (weight + lid force) - 1 = %.2g, largest deviation over 20000 more steps %.2g\n",
+              GetParam(), s, world.wallPressure(1), target, balance, worstHeld);
   EXPECT_LT(pressureError, 1e-3);
   EXPECT_LT(balance, 1e-3);
+  EXPECT_LT(worstHeld, 1e-2);
 }
+
+INSTANTIATE_TEST_SUITE_P(Engine, ServoWall, testing::Values(0.02, 1.0));
 
 // Hilbert re-ordering (spatial_order.hpp) moves particles to new slots with their contacts and
 // histories: forces per particle id are unchanged to round-off (summation order changes), and

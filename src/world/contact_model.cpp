@@ -148,10 +148,13 @@ ContactForce contactForce(const ContactModel& model, const ContactGeometry& geom
   }
   const double dampingScale = 2.0 * std::sqrt(5.0 / 6.0) * model.dampingRatio;
   const double normalRate = -motion.relativeVelocity.dot(n);  // > 0 approaching
-  const double Fn = elastic + dampingScale * std::sqrt(motion.effectiveMass * Sn) * normalRate;
+  const double damping = dampingScale * std::sqrt(motion.effectiveMass * Sn) * normalRate;
+  const double Fn = elastic + damping;
 
   ContactForce out;
   out.normal = Fn;
+  out.normalDamping = damping;
+  out.normalStiffness = Sn;
   out.area = area;
   out.onB = Fn * n;
   const Vec3 vt = motion.relativeVelocity - motion.relativeVelocity.dot(n) * n;

@@ -263,11 +263,21 @@ void World::computeForces() {
       }
     }
   }
-  for (Wall& w : walls_) w.force.setZero();
+  for (Wall& w : walls_) {
+    w.force.setZero();
+    w.elasticForce.setZero();
+    w.stiffness = 0.0;
+  }
   interacting_.clear();
   for (std::uint32_t k = 0; k < pairs_.size(); ++k) {
     if (!acting_[k]) continue;
-    if (pairs_[k].onWall()) walls_[pairs_[k].b & ~wallFlag].force += loads_[k].force;
+    const Contact& c = pairs_[k];
+    if (c.onWall()) {
+      Wall& w = walls_[c.b & ~wallFlag];
+      w.force += c.force.onB;
+      w.elasticForce += c.force.onB - c.force.normalDamping * c.geometry.normal;
+      w.stiffness += c.force.normalStiffness;
+    }
     interacting_.push_back(k);
   }
   forcesCurrent_ = true;
@@ -288,10 +298,7 @@ void World::step() {
   }
   for (std::size_t k = 0; k < walls_.size(); ++k) {
     Wall& w = walls_[k];
-    if (w.servo) {
-      const double error = (w.servo->pressure - wallPressure(k)) / w.servo->pressure;
-      w.velocity = w.servo->maxSpeed * std::clamp(error, -1.0, 1.0) * w.plane.normal;
-    }
+    if (w.servo) w.velocity = servoVelocity(k) * w.plane.normal;
     w.plane.point += h * w.velocity;
   }
   time_ += h;
@@ -303,12 +310,28 @@ void World::step() {
   timing_.integration += seconds(Clock::now() - kickStart);
 }
 
+double World::wallArea(std::size_t w) const {
+  int axis;
+  walls_.at(w).plane.normal.cwiseAbs().maxCoeff(&axis);
+  const Vec3 L = domain_.length();
+  return L.prod() / L(axis);
+}
+
 double World::wallPressure(std::size_t w) const {
   const Wall& wall = walls_.at(w);
-  int axis;
-  wall.plane.normal.cwiseAbs().maxCoeff(&axis);
-  const Vec3 L = domain_.length();
-  return std::abs(wall.force.dot(wall.plane.normal)) / (L.prod() / L(axis));
+  return std::abs(wall.force.dot(wall.plane.normal)) / wallArea(w);
+}
+
+double World::servoVelocity(std::size_t w) const {
+  const Wall& wall = walls_[w];
+  const double target = wall.servo->pressure * wallArea(w);
+  const double error = target - std::abs(wall.elasticForce.dot(wall.plane.normal));  // N
+  double speed = wall.servo->maxSpeed * std::clamp(error / target, -1.0, 1.0);
+  if (wall.stiffness > 0.0) {
+    const double limit = std::abs(error) / (2.0 * wall.stiffness * dt_);
+    speed = std::clamp(speed, -limit, limit);
+  }
+  return speed;
 }
 
 double World::kineticEnergy() const {

@@ -114,6 +114,8 @@ struct ContactKinematics {
 struct ContactForce {
   Vec3 onB = Vec3::Zero();  ///< force on B (N); A receives -onB
   double normal = 0.0;      ///< normal force magnitude (N)
+  double normalDamping = 0.0;  ///< its viscous part (N): normal - normalDamping is the elastic force
+  double normalStiffness = 0.0;  ///< S_n = dF/d(delta) of the elastic part (N/m), as the damping uses it
   double area = 0.0;        ///< contact area (m^2)
   Vec3 momentOnB = Vec3::Zero();  ///< pure moment on B (N m), rolling resistance; A receives -momentOnB
 };

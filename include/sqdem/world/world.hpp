@@ -37,8 +37,14 @@ struct Material {
 };
 
 /// Force control of a wall: before each step the wall moves along its normal with
-/// v = max_speed clamp((p_target - p) / p_target, -1, 1), p its current normal pressure
-/// (proportional control; the wall advances into the particles while p < p_target).
+///   v = max_speed clamp((p_target - p) / p_target, -1, 1),
+/// limited to |v| <= |F_target - F| / (2 k dt) while it touches particles (proportional
+/// control; the wall advances into the particles while p < p_target). p and F are the elastic
+/// part of the wall's normal load: the contacts' damping depends on the wall's own velocity and
+/// would feed the command back into the reading. k is the sum of the wall contacts' normal
+/// stiffnesses, so one step closes at most half the force error the contacts see at once; this
+/// keeps the loop stable however large max_speed is (without it, max_speed dt k / F_target > 2
+/// made the wall chatter in and out of the bed).
 struct WallServo {
   double pressure = 0.0;  ///< target normal pressure (Pa), > 0
   double maxSpeed = 0.0;  ///< (m/s), > 0
@@ -51,6 +57,8 @@ struct Wall {
   Vec3 velocity = Vec3::Zero();  ///< (m/s)
   std::uint32_t material = 0;
   Vec3 force = Vec3::Zero();     ///< (N), from the last force computation
+  Vec3 elasticForce = Vec3::Zero();  ///< the same without the contacts' normal damping (N)
+  double stiffness = 0.0;        ///< sum of its contacts' normal stiffnesses S_n (N/m)
   std::optional<WallServo> servo;
 };
 
@@ -152,6 +160,8 @@ class World {
   /// Normal pressure on wall w: |F . n| over the box cross-section normal to the wall's
   /// dominant axis (Pa).
   double wallPressure(std::size_t w) const;
+  /// Its cross-section there (m^2).
+  double wallArea(std::size_t w) const;
 
   double kineticEnergy() const;
   /// Rayleigh time (000 Eq. 71) of the particle with the smallest semi-axis (s); scenes use a
@@ -174,6 +184,7 @@ class World {
   /// than half the skin), so steps in between copy no contact records.
   void buildCandidates();
   bool wallsMovedHalfSkin() const;
+  double servoVelocity(std::size_t w) const;  ///< along wall w's normal (m/s), WallServo
   double largestRange() const;  ///< the largest gap any law acts across (m)
   /// Per particle, the indices of its contacts in key order (for the parallel reduction).
   void indexInvolvement();
