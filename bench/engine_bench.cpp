@@ -25,7 +25,7 @@ namespace {
 struct Case {
   const char* name;
   Superquadric shape;
-  NormalLaw law;
+  bool curvatures;  ///< elliptic Hertz on the curvatures, else volume-sphere Hertz
 };
 
 World denseBed(const Case& c, int edge, std::uint64_t seed) {
@@ -36,7 +36,7 @@ World denseBed(const Case& c, int edge, std::uint64_t seed) {
   const Material m{1e7, 0.3, 1000.0, 0.3, 0.5};
   World world({c.shape}, {m}, domain, 0.1 * c.shape.halfExtents().minCoeff());
   ContactModel model = world.defaultContactModel(0, 0);
-  model.normal = c.law;
+  model.curvatures = c.curvatures;
   world.setContactModel(0, 0, model);
   std::mt19937_64 rng(seed);
   std::normal_distribution<double> tilt(0.0, 0.02), speed(0.0, 0.01);
@@ -62,10 +62,10 @@ int main(int argc, char** argv) {
   const int only = argc > 3 ? std::atoi(argv[3]) : -1;
   const double R = 1e-3;
   const Case cases[] = {
-      {"ellipsoids 1:0.8:0.6, elliptic Hertz", Superquadric::ellipsoid(R, 0.8 * R, 0.6 * R), NormalLaw::EllipticHertz},
-      {"ellipsoids 1:0.8:0.6, volume-sphere Hertz", Superquadric::ellipsoid(R, 0.8 * R, 0.6 * R), NormalLaw::VolumeSphereHertz},
-      {"superquadrics n = 6, elliptic Hertz", Superquadric(R, 0.8 * R, 0.6 * R, 6.0, 6.0), NormalLaw::EllipticHertz},
-      {"spheres, Hertz", Superquadric::sphere(R), NormalLaw::VolumeSphereHertz},
+      {"ellipsoids 1:0.8:0.6, elliptic Hertz", Superquadric::ellipsoid(R, 0.8 * R, 0.6 * R), true},
+      {"ellipsoids 1:0.8:0.6, volume-sphere Hertz", Superquadric::ellipsoid(R, 0.8 * R, 0.6 * R), false},
+      {"superquadrics n = 6, elliptic Hertz", Superquadric(R, 0.8 * R, 0.6 * R, 6.0, 6.0), true},
+      {"spheres, Hertz", Superquadric::sphere(R), false},
   };
   std::printf("dense periodic bed, %d^3 = %d particles, %d steps per sample, median of 5 samples\n", edge,
               edge * edge * edge, steps);

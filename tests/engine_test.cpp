@@ -257,7 +257,7 @@ TEST(Engine, BeckerKamlahBedSettles) {
   EXPECT_EQ(world.statistics().detectorFailures, 0);
   ASSERT_GT(world.contacts().size(), 40u);
   std::size_t plastic = 0;
-  for (const Contact& c : world.contacts()) plastic += c.history.maxOverlap > c.geometry.overlap;
+  for (const Contact& c : world.contacts()) plastic += c.history.normal.load<BeckerKamlahHistory>().maxOverlap > c.geometry.overlap;
   EXPECT_GT(plastic, 0u);  // contacts remember a larger overlap than the current one
   for (std::size_t i = 0; i < world.particles().size(); ++i) ASSERT_TRUE(world.particles().position[i].allFinite());
 }
@@ -283,11 +283,12 @@ TEST(Engine, SceneErrorsNameLineKeyAndWhatIsAllowed) {
   expectSceneError(replaced(bedScene, "density: 2500", "density: heavy"), "'materials.glass.density': must be a finite number");
   expectSceneError(replaced(bedScene, "shape: grains", "shape: pebbles"), "unknown shape 'pebbles' (defined: grains)");
   expectSceneError(withInteraction("    normal: dmt\n"),
-                   "'interactions[0].normal': allowed: elliptic_hertz, volume_sphere_hertz");
+                   "'interactions[0].normal': unknown law 'dmt' (allowed: elliptic_hertz, volume_sphere_hertz, becker_kamlah, "
+                   "haervig_jkr, elliptic_jkr, nan_adhesive, jamari)");
   expectSceneError(replaced(bedScene, "periodic: [x, y]", "periodic: [x, w]"), "'domain.periodic': directions are x, y, z");
   expectSceneError(replaced(bedScene, "{name: settle, duration: 0.2}", "{name: settle}"), "'stages[0].duration': missing");
   expectSceneError(withInteraction("    normal: volume_sphere_hertz\n    tangential: elliptic_mindlin\n"),
-                   "'interactions[0].tangential': elliptic_mindlin needs an elliptic normal law (allowed here: circular_mindlin)");
+                   "'interactions[0].tangential': elliptic_mindlin needs a law on the curvatures (allowed here: circular_mindlin)");
   expectSceneError(replaced(bedScene, "seed: 7", "seed: 7\nbroad_phase: octree"), "'broad_phase': allowed: cell_list, aabb_tree");
   expectSceneError(replaced(bedScene, "grains: {volume_radius", "grains: {file: no_such_shape.yaml}\n  unused: {volume_radius"),
                    "'shapes.grains.file': cannot open");
@@ -298,12 +299,20 @@ TEST(Engine, SceneErrorsNameLineKeyAndWhatIsAllowed) {
   expectSceneError(replaced(bedScene, "count: 60", "count: 60, solid_fraction: 0.1"), "'insert[0]': needs exactly one of count");
   expectSceneError(replaced(bedScene, "count: 60", "solid_fraction: 0.6"), "'insert[0].solid_fraction': must be in (0, 0.4]");
   expectSceneError(withInteraction("    normal: becker_kamlah\n"),
-                   "'interactions[0].normal': becker_kamlah needs yield_strength (Pa) in material 'glass'");
+                   "'interactions[0]': becker_kamlah needs yield_strength (Pa): give it here or in both materials");
   expectSceneError(withInteraction("    lambda_max: 2.5\n"),
-                   "plastic_transition, lambda_max and epsilon_max belong to normal: becker_kamlah");
+                   "'interactions[0].lambda_max': unknown key (allowed: materials, normal, tangential, eccentricity, cap_factor, "
+                   "reduced_stiffness, restitution, rolling_hysteresis, friction, and for elliptic_hertz: roughness); "
+                   "'lambda_max' is a key of normal: becker_kamlah");
   expectSceneError(withInteraction("    roughness: {sigma: 1.0e-6}\n"), "'interactions[0].roughness.asperity_count': missing");
-  expectSceneError(withInteraction("    roughness: {sigma: 1.0e-6, asperity_count: 10}\n    surface_energy: 0.1\n"),
-                   "Greenwood-Williamson roughness goes with the elastic normal laws, without surface_energy");
+  expectSceneError(withInteraction("    normal: elliptic_jkr\n    roughness: {sigma: 1.0e-6, asperity_count: 10}\n    surface_energy: 0.1\n"),
+                   "'interactions[0].roughness': unknown key (allowed: materials, normal, tangential, eccentricity, cap_factor, "
+                   "reduced_stiffness, restitution, rolling_hysteresis, friction, and for elliptic_jkr: surface_energy); "
+                   "'roughness' is a key of normal: elliptic_hertz, volume_sphere_hertz");
+  expectSceneError(withInteraction("    normal: elliptic_hertz\n    rolling_hysteresis: 0.5\n"),
+                   "'interactions[0].rolling_hysteresis': needs normal: haervig_jkr");
+  expectSceneError(withInteraction("    normal: elliptic_jkr\n    surface_energy: -0.1\n"),
+                   "'interactions[0].surface_energy': must be > 0 (J/m^2, gamma; W = 2 gamma)");
   expectSceneError(withInteraction("    restitution: 0\n"), "'interactions[0].restitution': must be in (0, 1]");
   expectSceneError("seed: [1", "not valid YAML");
   // A roughness range beyond the skin, and a region too small for the particles, are reported

@@ -42,12 +42,13 @@ struct CollisionErrors {
 };
 
 // Two 1.5 x 1 x 0.8 mm ellipsoids collide without damping or friction.
-CollisionErrors collide(NormalLaw normal, bool oblique) {
+/// curvatures: elliptic Hertz on the detector's curvatures, else volume-sphere Hertz.
+CollisionErrors collide(bool curvatures, bool oblique) {
   const Material m{1e7, 0.3, 1000.0, 0.0, 1.0};
   World world({Superquadric::ellipsoid(1.5e-3, 1e-3, 0.8e-3)}, {m}, bigBox(), 2e-4);
   ContactModel law = world.defaultContactModel(0, 0);
   law.eccentricity = EccentricityMethod::Exact;
-  law.normal = normal;
+  law.curvatures = curvatures;
   world.setContactModel(0, 0, law);
   if (oblique) {  // off-centre, rotated bodies, one spinning
     world.addParticle(0, 0, Vec3(-2e-3, 0.3e-3, 0.0), Quat(Eigen::AngleAxisd(0.4, Vec3(0, 0, 1))));
@@ -79,9 +80,8 @@ CollisionErrors collide(NormalLaw normal, bool oblique) {
 // Energy and momentum are conserved by a conservative law: elliptic Hertz while the contact
 // curvature is constant (head-on at the tips), Hertz on volume-equivalent spheres always.
 TEST(World, ElasticEllipsoidCollisionConservesEnergyAndMomentum) {
-  for (const auto& [normal, oblique] : {std::pair{NormalLaw::EllipticHertz, false},
-                                        std::pair{NormalLaw::VolumeSphereHertz, true}}) {
-    const CollisionErrors e = collide(normal, oblique);
+  for (const auto& [curvatures, oblique] : {std::pair{true, false}, std::pair{false, true}}) {
+    const CollisionErrors e = collide(curvatures, oblique);
     std::printf("energy %.3g, momentum %.3g, angular momentum %.3g\n", e.energy, e.momentum, e.angularMomentum);
     EXPECT_LT(e.energy, 1e-6);
     EXPECT_LT(e.momentum, 1e-9);
@@ -94,7 +94,7 @@ TEST(World, ElasticEllipsoidCollisionConservesEnergyAndMomentum) {
 // kinetic energy is not restored exactly (measured +0.44 %, independent of the time step).
 // Momentum is still conserved: the law acts equally and oppositely at one point.
 TEST(World, ObliqueEllipticHertzImpactConservesMomentum) {
-  const CollisionErrors e = collide(NormalLaw::EllipticHertz, true);
+  const CollisionErrors e = collide(true, true);
   std::printf("oblique elliptic Hertz: energy change %.3g (model, not integrator), momentum %.3g, angular %.3g\n",
               e.energy, e.momentum, e.angularMomentum);
   EXPECT_LT(e.momentum, 1e-9);
@@ -136,7 +136,7 @@ Impact adhesiveImpact(double youngs, double surfaceEnergy) {
   const double R = 1e-5, v0 = 0.2;
   World world({Superquadric::sphere(R)}, {Material{youngs, 0.3, 2500.0, 0.0, 0.9}}, bigBox(), 1e-6);
   ContactModel law = world.defaultContactModel(0, 0);
-  law.surfaceEnergy = surfaceEnergy;
+  law.normal = HaervigJkrLaw{surfaceEnergy, surfaceEnergy};
   world.setContactModel(0, 0, law);
   world.addWall(Wall{.plane = Plane{Vec3::Zero(), Vec3::UnitZ()}});
   world.addParticle(0, 0, Vec3(0.0, 0.0, 1.0001 * R), Quat::Identity());
@@ -209,8 +209,7 @@ TEST(World, BeckerKamlahSphereImpactFollowsThorntonRestitution) {
   const auto rebound = [&](double speed) {
     World world({Superquadric::sphere(R)}, {Material{E, nu, rho, 0.0, 1.0, Y}}, bigBox(), 1e-5);
     ContactModel law = world.defaultContactModel(0, 0);
-    law.normal = NormalLaw::BeckerKamlah;
-    law.plasticTransition = false;
+    law.normal = BeckerKamlahLaw{{.yieldStrength = Y, .transition = false}};
     world.setContactModel(0, 0, law);
     world.addWall(Wall{.plane = Plane{Vec3::Zero(), Vec3::UnitZ()}});
     world.addParticle(0, 0, Vec3(0.0, 0.0, 1.00001 * R), Quat::Identity());
@@ -249,7 +248,7 @@ TEST(World, RollingResistanceHoldsBelowTheYieldForceAndRollsAbove) {
   const auto travel = [&](double forceRatio) {
     World world({Superquadric::sphere(R)}, {Material{E, nu, rho, 1.0, 0.3}}, bigBox(), 1e-7);
     ContactModel law = world.defaultContactModel(0, 0);
-    law.surfaceEnergy = law.realSurfaceEnergy = gamma;
+    law.normal = HaervigJkrLaw{gamma, gamma};
     law.realModulus = law.effectiveModulus;
     law.rollingHysteresis = hysteresis;
     world.setContactModel(0, 0, law);
@@ -284,8 +283,7 @@ TEST(World, RoughSphereRestsOnItsAsperities) {
   const double R = 1e-3, sigma = 1e-6, asperities = 100.0, g = 9.81;
   World world({Superquadric::sphere(R)}, {Material{1e8, 0.3, 2500.0, 0.0, 0.3}}, bigBox(), 1e-4);
   ContactModel law = world.defaultContactModel(0, 0);
-  law.roughnessSigma = sigma;
-  law.asperityCount = asperities;
+  law.normal = GreenwoodWilliamsonLaw{{.asperityCount = asperities, .sigma = sigma}};
   world.setContactModel(0, 0, law);
   world.addWall(Wall{.plane = Plane{Vec3::Zero(), Vec3::UnitZ()}});
   world.addParticle(0, 0, Vec3(0.0, 0.0, R + 3.5 * sigma), Quat::Identity());
@@ -315,8 +313,7 @@ TEST(World, RoughContactStartsAtItsRange) {
   const double R = 1e-3, sigma = 1e-6, v = 0.01, dt = 1e-6;
   World world({Superquadric::sphere(R)}, {Material{1e8, 0.3, 2500.0, 0.0, 1.0}}, bigBox(), 10e-6);
   ContactModel law = world.defaultContactModel(0, 0);
-  law.roughnessSigma = sigma;
-  law.asperityCount = 100.0;
+  law.normal = GreenwoodWilliamsonLaw{{.asperityCount = 100.0, .sigma = sigma}};
   world.setContactModel(0, 0, law);
   world.addParticle(0, 0, Vec3(-R - 30.3e-6, 0.0, 0.0), Quat::Identity());  // a rebuild falls at a gap just over the skin
   world.addParticle(0, 0, Vec3(R + 30.3e-6, 0.0, 0.0), Quat::Identity());
@@ -361,7 +358,7 @@ TEST(PackingMeasures, StressTensorOfAContactSetEqualsTheLoveWeberSum) {
     const Material m{1e7, 0.3, 1000.0, friction, 1.0};
     World world({Superquadric::ellipsoid(1e-3, 1e-3, 1e-3)}, {m}, bigBox(), 2e-4);
     ContactModel law = world.defaultContactModel(0, 0);
-    law.normal = NormalLaw::VolumeSphereHertz;
+    law.curvatures = false;
     world.setContactModel(0, 0, law);
     const Vec3 n = Vec3(1.0, -2.0, 3.0).normalized(), lever = 1.9e-3 * n;
     world.addParticle(0, 0, Vec3::Zero(), Quat::Identity());

@@ -283,7 +283,7 @@ int runContact(const std::string& inputPath, const fs::path& outDir, bool allowD
     if (!c.contains("geometry")) throw InputError(where + ": missing key 'geometry'");
     if (!c.contains("law")) throw InputError(where + ": missing key 'law'");
     CurveGeometry geometry(c["geometry"], where + ".geometry");
-    auto law = makeDrivenLaw(c["law"], where + ".law", geometry.radii(), materials, geometry.meanRadiusSum());
+    auto law = std::make_unique<DrivenLaw>(c["law"], where + ".law", geometry.radii(), materials, geometry.meanRadiusSum());
     curves.push_back({label, std::move(geometry), std::move(law)});
   }
   const DisplacementPath path = readPath(input, curves.front().geometry.meanRadiusSum());
@@ -297,7 +297,7 @@ int runContact(const std::string& inputPath, const fs::path& outDir, bool allowD
     for (const Curve& c : curves) {
       if (c.law->adhesive()) {
         throw InputError("tangential: the Mindlin-Deresiewicz drive needs a non-adhesive normal law "
-                         "(hertz or becker_kamlah); curve '" + c.label + "' is adhesive");
+                         "(elliptic_hertz, becker_kamlah or jamari); curve '" + c.label + "' is adhesive");
       }
     }
   }
@@ -312,7 +312,7 @@ int runContact(const std::string& inputPath, const fs::path& outDir, bool allowD
   std::optional<YieldPoint> reference;
   if (normalised) {
     reference = curves.front().law->yield();
-    if (!reference) throw InputError("plot: normalise 'yield' needs a first curve with a yield point (becker_kamlah or nan)");
+    if (!reference) throw InputError("plot: normalise 'yield' needs a first curve with a yield point (becker_kamlah, nan_adhesive or jamari)");
   }
 
   fs::create_directories(outDir);

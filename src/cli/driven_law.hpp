@@ -1,14 +1,14 @@
 #pragma once
-// Normal contact laws behind one interface for the single-contact driver (`sqdem contact`):
-// each is built once from the contact's relative radii (the laws' undeformed-curvature
-// assumption) and then evaluated along a prescribed overlap history, keeping its own history.
+// A registered normal law (law_registry.hpp) driven along a prescribed overlap history for the
+// single-contact driver (`sqdem contact`): built once from the contact's relative radii (the
+// laws' undeformed-curvature assumption), keeping its own history; plus what the driver reports
+// of each law (its constants and yield point).
 
-#include <memory>
 #include <optional>
 #include <string>
 
 #include "json_input.hpp"
-#include "sqdem/mechanics/elliptic.hpp"
+#include "sqdem/mechanics/law_registry.hpp"
 
 namespace sqdem::cli {
 
@@ -16,24 +16,13 @@ struct LawSample {
   double force = 0.0;                ///< normal force (N), > 0 repulsive
   std::optional<double> area;        ///< contact area (m^2), where the law defines one
   const char* regime = "separated";  ///< branch / regime name
+  bool contact = false;              ///< the law acts (attached, or touching)
 };
 
 /// A reference point for normalised plots: (delta_Y, F_pY) or (alpha_y, f_y).
 struct YieldPoint {
   double overlap = 0.0;  ///< (m)
   double force = 0.0;    ///< (N)
-};
-
-class DrivenLaw {
- public:
-  virtual ~DrivenLaw() = default;
-  /// Next point of the history (overlap in m).
-  virtual LawSample at(double overlap) = 0;
-  virtual std::optional<YieldPoint> yield() const { return std::nullopt; }
-  /// Law constants worth reporting (pull-off force, l_max, ...), as a JSON object.
-  virtual json constants() const { return json::object(); }
-  /// Laws without adhesion can drive the Mindlin-Deresiewicz tangential law.
-  virtual bool adhesive() const { return false; }
 };
 
 /// Materials of the two bodies (Pa, -).
@@ -44,9 +33,27 @@ struct ContactMaterials {
   double meanPoisson() const { return 0.5 * (poissonA + poissonB); }
 };
 
-/// Builds the law described by `law` ({"type": ..., parameters}); `meanRadiusSum` r_IJ (m) is
-/// needed only by the NMC fits of Becker-Kamlah (0 when unknown).
-std::unique_ptr<DrivenLaw> makeDrivenLaw(const json& law, const std::string& where, const RelativeRadii& radii,
-                                         const ContactMaterials& materials, double meanRadiusSum);
+class DrivenLaw {
+ public:
+  /// The law described by `law` ({"type": <registered name>, "eccentricity": exact | explicit |
+  /// tabulated, the law's keys}); `meanRadiusSum` r_IJ (m) is needed only by the NMC fits of
+  /// Becker-Kamlah (0 when unknown).
+  DrivenLaw(const json& law, const std::string& where, const RelativeRadii& radii, const ContactMaterials& materials,
+            double meanRadiusSum);
+
+  /// Next point of the history (overlap in m).
+  LawSample at(double overlap);
+  std::optional<YieldPoint> yield() const;
+  /// Law constants worth reporting (pull-off force, l_max, ...), as a JSON object.
+  json constants() const;
+  /// Adhesive laws cannot drive the Mindlin-Deresiewicz tangential law.
+  bool adhesive() const { return adhesive_; }
+
+ private:
+  NormalLaw law_;
+  NormalContact contact_;
+  NormalHistory history_;
+  bool adhesive_ = false;
+};
 
 }  // namespace sqdem::cli

@@ -92,6 +92,11 @@ void printSummary(const World& world, const RunReport& report, double wall, cons
     }
     std::printf("\n");
   }
+  if (st.lostAdhesions > 0 || st.lawFailures > 0) {
+    std::printf("contact laws: %lld adhesive contacts lost before their law detached them (beyond the detector's "
+                "reach), %lld contacts outside their law's valid parameters (no force)\n",
+                st.lostAdhesions, st.lawFailures);
+  }
   std::printf("final: solid fraction %.4f (bulk slab %.3g m), mean coordination %.3f (%.3f without rattlers), bed height %.4g m\n",
               m.solidFraction, m.slabHeight, m.meanCoordination, m.meanCoordinationNonRattlers, m.bedHeight);
   if (m.betweenWallsFraction > 0.0) std::printf("final: solid fraction between the walls %.4f\n", m.betweenWallsFraction);

@@ -94,4 +94,46 @@ BeckerKamlahState BeckerKamlah::evaluate(double overlap, BeckerKamlahHistory& hi
   return s;
 }
 
+BeckerKamlahLaw BeckerKamlahLaw::read(const LawInput& in, const PairElasticity& pair) {
+  if (pair.stiffnessScale != 1.0) in.fail("", "becker_kamlah takes no reduced_stiffness (no published rule for plastic contacts)");
+  BeckerKamlahParameters p;
+  p.yieldStrength = in.positive("yield_strength", "Pa, yield strength in simple tension", pair.yieldStrength);
+  if (!(p.yieldStrength > 0.0)) in.fail("", "becker_kamlah needs yield_strength (Pa): give it here or in both materials");
+  if (in.has("plastic_transition")) p.transition = in.flag("plastic_transition");
+  if (in.has("lambda_max") != in.has("epsilon_max")) {
+    in.fail("", "give both lambda_max and epsilon_max, or neither (NMC fits, 002 Eq. 54)");
+  }
+  if (in.has("lambda_max")) {
+    p.lambdaMax = in.number("lambda_max");
+    p.epsilonMax = in.number("epsilon_max");
+    if (!(p.lambdaMax >= 1.6)) in.fail("lambda_max", "must be >= 1.6 (p_Y = 1.6 Y)");
+    if (!(p.epsilonMax > 1.0)) in.fail("epsilon_max", "must be > 1");
+  } else {
+    p.epsilonMax = 0.0;  // 0: the fits, per contact
+  }
+  p.exponent = in.positive("exponent", "-, n of 002 Eq. 28", p.exponent);
+  return {p};
+}
+
+BeckerKamlahParameters BeckerKamlahLaw::at(const NormalContact& c, const BeckerFactors& geometry) const {
+  BeckerKamlahParameters p = parameters;
+  p.effectiveModulus = c.effectiveModulus;
+  if (p.transition && p.lambdaMax == 0.0) {
+    const BeckerKamlahFits fits = nmcBeckerKamlahFits(geometry.Re, c.radiusSum);
+    p.lambdaMax = fits.lambdaMax;
+    p.epsilonMax = fits.epsilonMax;
+  }
+  return p;
+}
+
+NormalResponse BeckerKamlahLaw::force(const NormalContact& c, double overlap, History& h) const {
+  if (!(overlap > 0.0)) return {.acting = false};
+  const BeckerFactors geometry = beckerFactors(c.radii);
+  const BeckerKamlahState s = BeckerKamlah(geometry, at(c, geometry)).evaluate(overlap, h);
+  return {.force = s.force,
+          .stiffness = 2.0 * c.effectiveModulus * c.factors.gamma * std::sqrt(c.radii.Rc) * std::sqrt(overlap),
+          .area = std::numbers::pi * s.contactRadius * s.contactRadius,
+          .regime = describe(s.regime)};
+}
+
 }  // namespace sqdem

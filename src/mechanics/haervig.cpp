@@ -58,4 +58,24 @@ double HaervigRolling::torque(double& xi, double radiusRatio) const {
   return 4.0 * criticalForce * std::pow(radiusRatio, 1.5) * xi;
 }
 
+HaervigJkrLaw HaervigJkrLaw::read(const LawInput& in, const PairElasticity& pair) {
+  const double gamma = in.positive("surface_energy", "J/m^2, gamma; W = 2 gamma");
+  return {pair.reducedSurfaceEnergy(gamma), gamma};
+}
+
+HaervigJkr HaervigJkrLaw::at(const NormalContact& c) const {
+  return HaervigJkr(c.effectiveModulus, surfaceEnergy, c.factors.gamma * c.factors.gamma * c.radii.Rc);
+}
+
+NormalResponse HaervigJkrLaw::force(const NormalContact& c, double overlap, History&) const {
+  if (!(overlap > 0.0)) return {.acting = false};
+  const HaervigJkr jkr = at(c);
+  const double sqrtRc = std::sqrt(c.radii.Rc);
+  return {.force = jkr.normalForce(overlap),
+          .stiffness = 2.0 * c.effectiveModulus * c.factors.gamma * sqrtRc * std::sqrt(overlap),
+          .area = std::numbers::pi * c.radii.Rc * c.factors.beta * overlap,
+          .pullOff = jkr.criticalForce(),
+          .regime = "attached"};
+}
+
 }  // namespace sqdem

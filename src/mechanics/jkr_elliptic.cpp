@@ -113,4 +113,29 @@ EllipticJkrState EllipticJkr::evaluate(double overlap) const {
   return s;
 }
 
+EllipticJkrLaw EllipticJkrLaw::read(const LawInput& in, const PairElasticity& pair) {
+  const double gamma = in.positive("surface_energy", "J/m^2, gamma; W = 2 gamma");
+  return {pair.reducedSurfaceEnergy(gamma)};
+}
+
+NormalResponse EllipticJkrLaw::force(const NormalContact& c, double overlap, History& h) const {
+  if (!h.attached && overlap < 0.0) return {.acting = false};
+  const EllipticJkr jkr = at(c);
+  const EllipticJkrState s = jkr.evaluate(overlap, h);
+  if (!s.attached) return {.acting = false};
+  return {.force = s.force,
+          .stiffness = 2.0 * c.effectiveModulus * std::sqrt(s.area / pi),
+          .area = s.area,
+          .pullOff = -jkr.pullOffForce(),
+          .regime = "attached"};
+}
+
+double EllipticJkrLaw::range(const History& h) const {
+  return h.attached ? std::numeric_limits<double>::infinity() : 0.0;
+}
+
+double EllipticJkrLaw::reach(double effectiveModulus, double R) const {
+  return -2.0 * EllipticJkr(effectiveModulus, 2.0 * surfaceEnergy, RelativeRadii{R, R, 1.0, 0.5 * R}).detachmentOverlap();
+}
+
 }  // namespace sqdem

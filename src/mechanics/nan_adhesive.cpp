@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 
 namespace sqdem {
@@ -83,5 +85,49 @@ NanState NanAdhesivePlastic::evaluate(double overlap, NanHistory& history) const
 }
 
 double nanCriticalTimeStep(double mass, double stiffness) { return 2.0 * std::sqrt(mass / stiffness); }
+
+NanAdhesiveLaw NanAdhesiveLaw::read(const LawInput& in, const PairElasticity& pair) {
+  if (pair.stiffnessScale != 1.0) in.fail("", "nan_adhesive takes no reduced_stiffness (000 gives no rule for it)");
+  NanAdhesiveLaw law;
+  law.surfaceEnergy = in.positive("surface_energy", "J/m^2, gamma; W = 2 gamma");
+  law.yieldPressure = in.positive("yield_pressure", "Pa, p_y");
+  law.elasticStiffness = in.positive("elastic_stiffness", "N/m, k_el; default pi R* p_y, 000 Eq. 52", 0.0);
+  law.plasticStiffness = in.positive("plastic_stiffness", "N/m, k_p; default k_el", 0.0);
+  return law;
+}
+
+NanAdhesivePlastic NanAdhesiveLaw::at(const NormalContact& c) const {
+  return NanAdhesivePlastic({.effectiveModulus = c.effectiveModulus,
+                             .effectiveRadius = c.factors.gamma * c.factors.gamma * c.radii.Rc,
+                             .workOfAdhesion = 2.0 * surfaceEnergy,
+                             .yieldPressure = yieldPressure,
+                             .elasticStiffness = elasticStiffness,
+                             .plasticStiffness = plasticStiffness});
+}
+
+NormalResponse NanAdhesiveLaw::force(const NormalContact& c, double overlap, History& h) const {
+  if (!h.attached && overlap < 0.0) return {.acting = false};
+  std::optional<NanAdhesivePlastic> valid;
+  try {
+    valid.emplace(at(c));
+  } catch (const std::invalid_argument&) {
+    return {.acting = false, .valid = false};
+  }
+  const NanAdhesivePlastic& law = *valid;
+  const NanState s = law.evaluate(overlap, h);
+  if (s.branch == NanBranch::Detached) return {.acting = false};
+  const NanUnloading u = law.unloadingFrom(h.maxOverlap);
+  const double slope = s.branch == NanBranch::Adhesive ? u.kC : s.branch == NanBranch::Plastic ? law.kP() : u.kE;
+  return {.force = s.force, .stiffness = slope, .pullOff = law.pullOffForceElastic(), .regime = describe(s.branch)};
+}
+
+double NanAdhesiveLaw::range(const History& h) const {
+  return h.attached ? std::numeric_limits<double>::infinity() : 0.0;
+}
+
+double NanAdhesiveLaw::reach(double effectiveModulus, double R) const {
+  const NormalContact sphere{.radii = {R, R, 1.0, 0.5 * R}, .factors = circularHertzFactors(), .effectiveModulus = effectiveModulus};
+  return -2.0 * at(sphere).unloadingFrom(0.0).alphaJp;
+}
 
 }  // namespace sqdem

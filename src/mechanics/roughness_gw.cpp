@@ -38,4 +38,12 @@ double RoughContact::area(double Rc, double beta, double h) const {
   return std::numbers::pi * asperityCount * Rc * sigma * beta * greenwoodWilliamsonAreaIntegral(h);
 }
 
+NormalResponse GreenwoodWilliamsonLaw::force(const NormalContact& c, double overlap, History&) const {
+  const double E = c.effectiveModulus, Rc = c.radii.Rc, gamma = c.factors.gamma;
+  const double h = -overlap / rough.sigma, step = 1e-4;
+  return {.force = rough.force(E, Rc, gamma, h),
+          .stiffness = (rough.force(E, Rc, gamma, h - step) - rough.force(E, Rc, gamma, h + step)) / (2.0 * step * rough.sigma),
+          .area = rough.area(Rc, c.factors.beta, h)};
+}
+
 }  // namespace sqdem

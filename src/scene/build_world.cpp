@@ -126,28 +126,27 @@ World buildWorld(const Scene& scene) {
   for (const InteractionSpec& in : scene.interactions) {
     ContactModel model = world.defaultContactModel(in.materialA, in.materialB);
     model.normal = in.normal;
+    model.curvatures = in.curvatures;
     model.tangential = in.tangential;
-    model.plasticTransition = in.plasticTransition;
-    model.lambdaMax = in.lambdaMax;
-    model.epsilonMax = in.epsilonMax;
     model.eccentricity = in.eccentricity;
     model.capFactor = in.capFactor;
     if (in.restitution > 0.0) model.dampingRatio = restitutionDampingRatio(in.restitution);  // 0 for e = 1
     if (in.friction >= 0.0) model.friction = in.friction;
     model.realModulus = model.effectiveModulus;  // F_C, xi_crit of rolling use the real material
-    model.realSurfaceEnergy = in.surfaceEnergy;
     model.effectiveModulus *= in.stiffnessScale;
     model.effectiveShear *= in.stiffnessScale;
-    model.surfaceEnergy = in.surfaceEnergy * std::pow(in.stiffnessScale, 0.4);  // 001 Eq. 24
     model.rollingHysteresis = in.rollingHysteresis;
-    model.roughnessSigma = in.roughnessSigma;
-    model.asperityCount = in.asperityCount;
-    if (model.range() > world.neighbourList().skin()) {  // the detector solves gaps up to the skin
-      throw SceneError(scene.path + ": interactions: roughness sigma = " + std::to_string(in.roughnessSigma) +
-                       " m acts up to a gap of 4 sigma, beyond the skin " + std::to_string(world.neighbourList().skin()) +
-                       " m: raise 'skin' to at least 4 sigma");
+    const std::string where = scene.path + ": interactions[" + std::to_string(&in - scene.interactions.data()) + "]";
+    try {
+      world.setContactModel(in.materialA, in.materialB, model);
+    } catch (const std::invalid_argument& e) {
+      throw SceneError(where + ": " + in.normalName + " admits no contact of the scene's largest particles: " + e.what());
     }
-    world.setContactModel(in.materialA, in.materialB, model);
+    const double reach = world.contactModel(in.materialA, in.materialB).reach;
+    if (reach > world.neighbourList().skin()) {  // the detector solves gaps up to the skin
+      throw SceneError(where + ": " + in.normalName + " acts across gaps up to " + shortNumber(reach) +
+                       " m, beyond the skin " + shortNumber(world.neighbourList().skin()) + " m: raise 'skin' to at least that");
+    }
   }
   for (const WallSpec& spec : scene.walls) {
     Wall wall;

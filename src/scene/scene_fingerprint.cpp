@@ -37,9 +37,9 @@ std::uint64_t sceneFingerprint(const Scene& scene) {
     h.all(s.name, s.volumeRadius[0], s.volumeRadius[1], s.aspectB[0], s.aspectB[1], s.aspectC[0], s.aspectC[1], s.n1, s.n2);
   }
   for (const InteractionSpec& i : scene.interactions) {
-    h.all(h.n(i.materialA), h.n(i.materialB), h.n(i.normal), h.n(i.tangential), h.n(i.eccentricity), i.capFactor, i.restitution, i.friction, i.stiffnessScale,
-          i.surfaceEnergy, i.roughnessSigma, i.asperityCount, i.rollingHysteresis, h.n(i.plasticTransition), i.lambdaMax,
-          i.epsilonMax);
+    h.all(h.n(i.materialA), h.n(i.materialB), i.normalName, h.n(i.curvatures), h.n(i.tangential), h.n(i.eccentricity), i.capFactor,
+          i.restitution, i.friction, i.stiffnessScale, i.rollingHysteresis);
+    for (const auto& [key, value] : i.lawParameters) h.all(key, value);
   }
   for (const WallSpec& w : scene.walls) h.all(w.point, w.normal, w.velocity, h.n(w.material));
   for (const InsertionSpec& in : scene.insertions) {

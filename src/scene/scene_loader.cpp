@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "sqdem/geometry/superquadric.hpp"
+#include "sqdem/mechanics/law_input.hpp"
 #include "sqdem/scene/scene_loader.hpp"
 
 namespace sqdem {
@@ -43,15 +44,14 @@ class Reader {
   }
 
   void allowOnly(const YAML::Node& map, const std::string& where, std::initializer_list<const char*> keys) const {
+    allowOnly(map, where, std::vector<std::string_view>(keys.begin(), keys.end()));
+  }
+  void allowOnly(const YAML::Node& map, const std::string& where, const std::vector<std::string_view>& keys) const {
     uniqueKeys(map, where);
     for (const auto& entry : map) {
       const std::string key = entry.first.as<std::string>();
-      bool known = false;
-      for (const char* k : keys) known = known || key == k;
-      if (!known) {
-        std::string list;
-        for (const char* k : keys) list += std::string(list.empty() ? "" : ", ") + k;
-        fail(entry.first, keyPath(where, key), "unknown key (allowed: " + list + ")");
+      if (std::find(keys.begin(), keys.end(), key) == keys.end()) {
+        fail(entry.first, keyPath(where, key), "unknown key (allowed: " + joinKeys(keys) + ")");
       }
     }
   }
@@ -145,6 +145,54 @@ class Reader {
 
  private:
   std::string file_;
+};
+
+/// A law's keys in a scene mapping (law_input.hpp); `pairKeys` are the interaction's own keys,
+/// also allowed there. Every number read is recorded for the scene fingerprint.
+class SceneLawInput final : public LawInput {
+ public:
+  SceneLawInput(const Reader& r, YAML::Node map, std::string where, std::vector<std::string_view> pairKeys,
+                std::vector<std::pair<std::string, double>>& record)
+      : r_(r), map_(std::move(map)), where_(std::move(where)), pairKeys_(std::move(pairKeys)), record_(record) {}
+
+  bool has(std::string_view key) const override { return map_[std::string(key)].IsDefined(); }
+  double number(std::string_view key) const override {
+    const double x = r_.number(map_, std::string(key), where_);
+    record_.emplace_back(keyPath(where_, std::string(key)), x);
+    return x;
+  }
+  bool flag(std::string_view key) const override {
+    const bool b = r_.flag(map_, std::string(key), where_, false);
+    record_.emplace_back(keyPath(where_, std::string(key)), b ? 1.0 : 0.0);
+    return b;
+  }
+  std::unique_ptr<LawInput> child(std::string_view key) const override {
+    const YAML::Node node = map_[std::string(key)];
+    const std::string at = keyPath(where_, std::string(key));
+    if (!node.IsMap()) r_.fail(node, at, "must be a mapping");
+    return std::make_unique<SceneLawInput>(r_, node, at, std::vector<std::string_view>{}, record_);
+  }
+  std::vector<std::string> keys() const override {
+    r_.uniqueKeys(map_, where_);
+    std::vector<std::string> out;
+    for (const auto& entry : map_) {
+      const std::string key = entry.first.as<std::string>();
+      if (std::find(pairKeys_.begin(), pairKeys_.end(), key) == pairKeys_.end()) out.push_back(key);
+    }
+    return out;
+  }
+  std::string ownKeys() const override { return joinKeys(pairKeys_); }
+  void raise(std::string_view key, const std::string& message) const override {
+    const YAML::Node node = key.empty() ? map_ : map_[std::string(key)];
+    r_.fail(node.IsDefined() ? node : map_, key.empty() ? where_ : keyPath(where_, std::string(key)), message);
+  }
+
+ private:
+  const Reader& r_;
+  YAML::Node map_;
+  std::string where_;
+  std::vector<std::string_view> pairKeys_;
+  std::vector<std::pair<std::string, double>>& record_;
 };
 
 Material readMaterial(const Reader& r, const YAML::Node& m, const std::string& where) {
@@ -271,8 +319,9 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
   for (std::size_t k = 0; k < interactions.size(); ++k) {
     const YAML::Node in = interactions[k];
     const std::string where = "interactions[" + std::to_string(k) + "]";
-    r.allowOnly(in, where, {"materials", "normal", "tangential", "eccentricity", "cap_factor", "reduced_stiffness", "surface_energy",
-                            "plastic_transition", "lambda_max", "epsilon_max", "rolling_hysteresis", "roughness", "restitution", "friction"});
+    const std::vector<std::string_view> pairKeys{"materials", "normal",      "tangential",         "eccentricity", "cap_factor",
+                                                 "reduced_stiffness", "restitution", "rolling_hysteresis", "friction"};
+    r.uniqueKeys(in, where);
     const YAML::Node pair = in["materials"];
     if (!pair || !pair.IsSequence() || pair.size() != 2) r.fail(pair ? pair : in, where + ".materials", "must be a pair [material, material]");
     InteractionSpec spec;
@@ -280,17 +329,28 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
     spec.materialB = r.lookup(pair[1], where + ".materials", scene.materials, "material");
     if (declared[spec.materialA * nm + spec.materialB]) r.fail(pair, where + ".materials", "this pair is declared twice");
     declared[spec.materialA * nm + spec.materialB] = declared[spec.materialB * nm + spec.materialA] = true;
-    spec.normal = r.choice(in, "normal", where,
-                           {{"elliptic_hertz", NormalLaw::EllipticHertz}, {"volume_sphere_hertz", NormalLaw::VolumeSphereHertz},
-                            {"becker_kamlah", NormalLaw::BeckerKamlah}},
-                           NormalLaw::EllipticHertz);
-    // The elliptic tangential law needs the contact ellipse, which only the elliptic normal law has.
-    const bool elliptic = spec.normal != NormalLaw::VolumeSphereHertz;
+    spec.capFactor = r.number(in, "cap_factor", where, 10.0);
+    if (!(spec.capFactor > 0.0)) r.fail(in["cap_factor"], where + ".cap_factor", "must be > 0");
+    spec.stiffnessScale = r.number(in, "reduced_stiffness", where, 1.0);
+    if (!(spec.stiffnessScale > 0.0 && spec.stiffnessScale <= 1.0)) r.fail(in["reduced_stiffness"], where + ".reduced_stiffness", "must be in (0, 1] (E_mod / E)");
+    // The normal law (law_registry.hpp) reads its own keys.
+    const Material &A = scene.materials[spec.materialA].material, &B = scene.materials[spec.materialB].material;
+    const PairElasticity elasticity{
+        .effectiveModulus = effectiveModulus(A.youngsModulus, A.poissonRatio, B.youngsModulus, B.poissonRatio) * spec.stiffnessScale,
+        .stiffnessScale = spec.stiffnessScale,
+        .poissonRatio = 0.5 * (A.poissonRatio + B.poissonRatio),
+        .yieldStrength = std::min(A.yieldStrength, B.yieldStrength)};
+    const SceneLawInput lawInput(r, in, where, pairKeys, spec.lawParameters);
+    spec.normalName = in["normal"] ? r.text(in, "normal", where) : "elliptic_hertz";
+    const NormalLawEntry& entry = normalLaw(spec.normalName, lawInput, "normal");
+    spec.normal = readNormalLaw(entry, lawInput, elasticity);
+    spec.curvatures = entry.curvatures;
+    // The elliptic tangential law needs the contact ellipse, which only the curvature laws have.
     spec.tangential = r.choice(in, "tangential", where,
                                {{"elliptic_mindlin", TangentialLaw::EllipticMindlin}, {"circular_mindlin", TangentialLaw::CircularMindlin}},
-                               elliptic ? TangentialLaw::EllipticMindlin : TangentialLaw::CircularMindlin);
-    if (!elliptic && spec.tangential == TangentialLaw::EllipticMindlin) {
-      r.fail(in["tangential"], where + ".tangential", "elliptic_mindlin needs an elliptic normal law (allowed here: circular_mindlin)");
+                               entry.curvatures ? TangentialLaw::EllipticMindlin : TangentialLaw::CircularMindlin);
+    if (!entry.curvatures && spec.tangential == TangentialLaw::EllipticMindlin) {
+      r.fail(in["tangential"], where + ".tangential", "elliptic_mindlin needs a law on the curvatures (allowed here: circular_mindlin)");
     }
     spec.eccentricity = r.choice(in, "eccentricity", where,
                                  {{"tabulated", EccentricityMethod::Tabulated}, {"exact", EccentricityMethod::Exact},
@@ -303,47 +363,11 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
     }
     spec.friction = r.number(in, "friction", where, -1.0);
     if (in["friction"] && spec.friction < 0.0) r.fail(in["friction"], where + ".friction", "must be >= 0");
-    spec.capFactor = r.number(in, "cap_factor", where, 10.0);
-    if (!(spec.capFactor > 0.0)) r.fail(in["cap_factor"], where + ".cap_factor", "must be > 0");
-    spec.stiffnessScale = r.number(in, "reduced_stiffness", where, 1.0);
-    if (!(spec.stiffnessScale > 0.0 && spec.stiffnessScale <= 1.0)) r.fail(in["reduced_stiffness"], where + ".reduced_stiffness", "must be in (0, 1] (E_mod / E)");
-    spec.surfaceEnergy = r.number(in, "surface_energy", where, 0.0);
-    if (spec.surfaceEnergy < 0.0) r.fail(in["surface_energy"], where + ".surface_energy", "must be >= 0 (J/m^2)");
     spec.rollingHysteresis = r.number(in, "rolling_hysteresis", where, 0.0);
     if (spec.rollingHysteresis < 0.0) r.fail(in["rolling_hysteresis"], where + ".rolling_hysteresis", "must be >= 0 (dgamma/gamma)");
-    if (spec.rollingHysteresis > 0.0 && !(spec.surfaceEnergy > 0.0)) {
-      r.fail(in["rolling_hysteresis"], where + ".rolling_hysteresis", "needs surface_energy > 0 (adhesive rolling resistance, 001 Eqs. 18-22)");
-    }
-    if (const YAML::Node rough = in["roughness"]) {
-      const std::string at = where + ".roughness";
-      r.allowOnly(rough, at, {"sigma", "asperity_count"});
-      spec.roughnessSigma = r.positive(rough, "sigma", at, "m, standard deviation of asperity heights");
-      spec.asperityCount = r.positive(rough, "asperity_count", at, "N A_n, asperities on the nominal contact area");
-      if (spec.normal == NormalLaw::BeckerKamlah || spec.surfaceEnergy > 0.0) {
-        r.fail(rough, at, "Greenwood-Williamson roughness goes with the elastic normal laws, without surface_energy");
-      }
-    }
-    if (spec.normal == NormalLaw::BeckerKamlah) {
-      for (const std::uint32_t m : {spec.materialA, spec.materialB}) {
-        if (!(scene.materials[m].material.yieldStrength > 0.0)) {
-          r.fail(pair, where + ".normal", "becker_kamlah needs yield_strength (Pa) in material '" + scene.materials[m].name + "'");
-        }
-      }
-      if (spec.stiffnessScale != 1.0 || spec.surfaceEnergy > 0.0) {
-        r.fail(in, where, "becker_kamlah takes neither reduced_stiffness (no published rule for plastic contacts) nor surface_energy");
-      }
-      spec.plasticTransition = r.flag(in, "plastic_transition", where, true);
-      if (in["lambda_max"].IsDefined() != in["epsilon_max"].IsDefined()) {
-        r.fail(in, where, "give both lambda_max and epsilon_max, or neither (NMC fits, 002 Eq. 54)");
-      }
-      if (in["lambda_max"]) {
-        spec.lambdaMax = r.number(in, "lambda_max", where);
-        spec.epsilonMax = r.number(in, "epsilon_max", where);
-        if (!(spec.lambdaMax >= 1.6)) r.fail(in["lambda_max"], where + ".lambda_max", "must be >= 1.6");
-        if (!(spec.epsilonMax > 1.0)) r.fail(in["epsilon_max"], where + ".epsilon_max", "must be > 1");
-      }
-    } else if (in["plastic_transition"] || in["lambda_max"] || in["epsilon_max"]) {
-      r.fail(in, where, "plastic_transition, lambda_max and epsilon_max belong to normal: becker_kamlah");
+    if (spec.rollingHysteresis > 0.0 && !std::holds_alternative<HaervigJkrLaw>(spec.normal)) {
+      r.fail(in["rolling_hysteresis"], where + ".rolling_hysteresis",
+             "needs normal: haervig_jkr (001's rolling resistance, Eqs. 18-22, is built on its F_C and a_0)");
     }
     scene.interactions.push_back(spec);
   }

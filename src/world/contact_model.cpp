@@ -1,60 +1,32 @@
 #include "sqdem/world/contact_model.hpp"
 
-#include "sqdem/mechanics/becker_kamlah.hpp"
-#include "sqdem/mechanics/haervig.hpp"
 #include "sqdem/mechanics/mindlin_deresiewicz.hpp"
-#include "sqdem/mechanics/roughness_gw.hpp"
 
 #include <cmath>
 #include <numbers>
-#include <optional>
 
 namespace sqdem {
 namespace {
 
-/// The contact's Hertz description: effective radius Rc, factors gamma/beta (and e^2, K, D) and,
-/// for curvature laws, the relative radii.
-struct HertzContact {
-  RelativeRadii radii;
-  HertzFactors factors;
-  double Rc = 0.0;
-};
-
-HertzContact hertzContact(const ContactModel& model, const ContactGeometry& geometry, const ContactKinematics& motion) {
-  HertzContact h;
+/// What the normal law sees of the contact: relative radii and factors from the curvatures, or
+/// the volume-equivalent spheres' circle (Ri = Rj = R*, Rc = R*/2).
+NormalContact normalContact(const ContactModel& model, const ContactGeometry& geometry, const ContactKinematics& motion) {
+  NormalContact c;
+  c.effectiveModulus = model.effectiveModulus;
+  c.radiusSum = motion.volumeRadiusA + (motion.volumeRadiusB > 0.0 ? motion.volumeRadiusB : motion.volumeRadiusA);
   if (model.usesCurvatures()) {
     const double reference = motion.volumeRadiusB > 0.0 ? std::sqrt(motion.volumeRadiusA * motion.volumeRadiusB)
                                                         : motion.volumeRadiusA;
-    h.radii = relativeRadii(geometry.curvatureA, geometry.curvatureB, model.capFactor * reference);
-    h.factors = hertzFactors(h.radii.ratio(), model.eccentricity);
-    h.Rc = h.radii.Rc;
-  } else {  // volume-equivalent spheres: a circle, Rc = R*/2
+    c.radii = relativeRadii(geometry.curvatureA, geometry.curvatureB, model.capFactor * reference);
+    c.factors = hertzFactors(c.radii.ratio(), model.eccentricity);
+  } else {
     const double Rstar = motion.volumeRadiusB > 0.0 ? motion.volumeRadiusA * motion.volumeRadiusB /
                                                           (motion.volumeRadiusA + motion.volumeRadiusB)
                                                     : motion.volumeRadiusA;
-    h.Rc = 0.5 * Rstar;
-    h.factors = circularHertzFactors();
+    c.radii = {.Ri = Rstar, .Rj = Rstar, .cosOmega = 1.0, .Rc = 0.5 * Rstar};
+    c.factors = circularHertzFactors();
   }
-  return h;
-}
-
-/// Becker-Kamlah force and area at the overlap; updates the largest overlap.
-BeckerKamlahState beckerKamlahForce(const ContactModel& model, const HertzContact& h, const ContactKinematics& motion,
-                                    double overlap, double& maxOverlap) {
-  BeckerKamlahParameters p{.effectiveModulus = model.effectiveModulus, .yieldStrength = model.yieldStrength,
-                           .lambdaMax = model.lambdaMax, .epsilonMax = model.epsilonMax,
-                           .transition = model.plasticTransition};
-  const BeckerFactors geometry = beckerFactors(h.radii);
-  if (p.transition && p.lambdaMax == 0.0) {
-    const double rIJ = motion.volumeRadiusA + (motion.volumeRadiusB > 0.0 ? motion.volumeRadiusB : motion.volumeRadiusA);
-    const BeckerKamlahFits fits = nmcBeckerKamlahFits(geometry.Re, rIJ);
-    p.lambdaMax = fits.lambdaMax;
-    p.epsilonMax = fits.epsilonMax;
-  }
-  BeckerKamlahHistory plastic{maxOverlap};
-  const BeckerKamlahState state = BeckerKamlah(geometry, p).evaluate(overlap, plastic);
-  maxOverlap = plastic.maxOverlap;
-  return state;
+  return c;
 }
 
 /// Keeps a history vector in the current tangent plane with its length (the contact rotates).
@@ -66,7 +38,7 @@ void keepInTangentPlane(Vec3& x, const Vec3& n) {
 }
 
 /// Tangential force on B (Coulomb-capped spring with damping); updates the spring.
-Vec3 tangentialForce(const ContactModel& model, const ContactGeometry& geometry, const HertzContact& h,
+Vec3 tangentialForce(const ContactModel& model, const ContactGeometry& geometry, const NormalContact& c,
                      const ContactKinematics& motion, const Vec3& vt, double area, double limit, double dampingScale,
                      Vec3& spring, double dt) {
   const Vec3& n = geometry.normal;
@@ -77,8 +49,8 @@ Vec3 tangentialForce(const ContactModel& model, const ContactGeometry& geometry,
   double ku, kv;
   if (model.tangential == TangentialLaw::EllipticMindlin && model.usesCurvatures()) {
     u = contactMajorAxis(geometry.curvatureA, geometry.curvatureB, n);
-    const double scale = 8.0 * model.effectiveShear * contactSemiMajorAxis(area, h.factors.e2);
-    const MindlinPhi phi = mindlinPhi(h.factors.K, h.factors.D, model.poissonRatio);
+    const double scale = 8.0 * model.effectiveShear * contactSemiMajorAxis(area, c.factors.e2);
+    const MindlinPhi phi = mindlinPhi(c.factors.K, c.factors.D, model.poissonRatio);
     ku = scale / phi.major;
     kv = scale / phi.minor;
   } else {
@@ -99,9 +71,12 @@ Vec3 tangentialForce(const ContactModel& model, const ContactGeometry& geometry,
 }
 
 /// Rolling resistance moment on B (001 Eqs. 18-22); updates the rolling displacement.
-Vec3 rollingMoment(const ContactModel& model, const HaervigJkr& modified, double R, double overlap, const Vec3& n,
+Vec3 rollingMoment(const ContactModel& model, const NormalContact& c, double overlap, const Vec3& n,
                    const ContactKinematics& motion, const Vec3& vt, Vec3& xi, double dt) {
-  const HaervigJkr real(model.realModulus, model.realSurfaceEnergy, R);
+  const HaervigJkrLaw& law = std::get<HaervigJkrLaw>(model.normal);
+  const HaervigJkr modified = law.at(c);
+  const double R = c.factors.gamma * c.factors.gamma * c.radii.Rc;  // the Hertz-equivalent sphere
+  const HaervigJkr real(model.realModulus, law.realSurfaceEnergy, R);
   const HaervigRolling rolling{real.criticalForce(), real.equilibriumContactRadius() / 12.0 * model.rollingHysteresis};
   // Eq. 20; the radius ratio term tends to -1/2 for a wall (r_B -> infinity).
   const double ratio = motion.volumeRadiusB > 0.0 ? (motion.volumeRadiusA - motion.volumeRadiusB) /
@@ -119,51 +94,35 @@ Vec3 rollingMoment(const ContactModel& model, const HaervigJkr& modified, double
 
 }  // namespace
 
-ContactForce contactForce(const ContactModel& model, const ContactGeometry& geometry,
-                          const ContactKinematics& motion, ContactHistory& history, double dt) {
+ContactForce contactForce(const ContactModel& model, const ContactGeometry& geometry, const ContactKinematics& motion,
+                          ContactHistory& history, double dt) {
   const double delta = geometry.overlap;
   const Vec3& n = geometry.normal;
-  const HertzContact h = hertzContact(model, geometry, motion);
-  const double gamma = h.factors.gamma, sqrtRc = std::sqrt(h.Rc), sqrtDelta = std::sqrt(std::max(delta, 0.0));
-  // Adhesion: Haervig's simplified JKR on the Hertz-equivalent sphere R* = gamma^2 Rc.
-  const double Rhertz = gamma * gamma * h.Rc;
-  std::optional<HaervigJkr> jkr;
-  if (model.surfaceEnergy > 0.0) jkr.emplace(model.effectiveModulus, model.surfaceEnergy, Rhertz);
-
-  double elastic, area = std::numbers::pi * h.Rc * h.factors.beta * delta;
-  double Sn = 2.0 * model.effectiveModulus * gamma * sqrtRc * sqrtDelta;  // dF/d(delta) of elliptic Hertz
-  if (model.normal == NormalLaw::BeckerKamlah) {
-    const BeckerKamlahState state = beckerKamlahForce(model, h, motion, delta, history.maxOverlap);
-    elastic = state.force;
-    area = std::numbers::pi * state.contactRadius * state.contactRadius;
-  } else if (model.roughnessSigma > 0.0) {
-    const RoughContact rough{model.asperityCount, model.roughnessSigma};
-    const double hs = -delta / model.roughnessSigma, step = 1e-4;
-    elastic = rough.force(model.effectiveModulus, h.Rc, gamma, hs);
-    area = rough.area(h.Rc, h.factors.beta, hs);
-    Sn = (rough.force(model.effectiveModulus, h.Rc, gamma, hs - step) -
-          rough.force(model.effectiveModulus, h.Rc, gamma, hs + step)) / (2.0 * step * model.roughnessSigma);
-  } else {
-    elastic = jkr ? jkr->normalForce(delta) : 4.0 / 3.0 * model.effectiveModulus * sqrtRc * gamma * delta * sqrtDelta;
+  const NormalContact c = normalContact(model, geometry, motion);
+  const NormalResponse r = normalResponse(model.normal, c, delta, history.normal);
+  if (!r.acting) {  // the law keeps its own record; the tangential and rolling springs end
+    history.spring.setZero();
+    history.rolling.setZero();
+    return {.acting = false, .valid = r.valid};
   }
   const double dampingScale = 2.0 * std::sqrt(5.0 / 6.0) * model.dampingRatio;
   const double normalRate = -motion.relativeVelocity.dot(n);  // > 0 approaching
-  const double damping = dampingScale * std::sqrt(motion.effectiveMass * Sn) * normalRate;
-  const double Fn = elastic + damping;
+  const double damping = dampingScale * std::sqrt(motion.effectiveMass * r.stiffness) * normalRate;
+  const double Fn = r.force + damping;
 
   ContactForce out;
   out.normal = Fn;
   out.normalDamping = damping;
-  out.normalStiffness = Sn;
-  out.area = area;
+  out.normalStiffness = r.stiffness;
+  out.area = r.area;
   out.onB = Fn * n;
   const Vec3 vt = motion.relativeVelocity - motion.relativeVelocity.dot(n) * n;
   if (model.friction > 0.0) {
-    const double limit = model.friction * (jkr ? std::abs(Fn + 2.0 * jkr->criticalForce()) : std::max(Fn, 0.0));
-    out.onB += tangentialForce(model, geometry, h, motion, vt, area, limit, dampingScale, history.spring, dt);
+    const double limit = model.friction * (r.pullOff > 0.0 ? std::abs(Fn + 2.0 * r.pullOff) : std::max(Fn, 0.0));
+    out.onB += tangentialForce(model, geometry, c, motion, vt, r.area, limit, dampingScale, history.spring, dt);
   }
-  if (jkr && model.rollingHysteresis > 0.0) {
-    out.momentOnB = rollingMoment(model, *jkr, Rhertz, delta, n, motion, vt, history.rolling, dt);
+  if (model.rollingHysteresis > 0.0) {
+    out.momentOnB = rollingMoment(model, c, delta, n, motion, vt, history.rolling, dt);
   }
   return out;
 }

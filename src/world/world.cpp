@@ -43,7 +43,6 @@ ContactModel World::defaultContactModel(std::uint32_t ma, std::uint32_t mb) cons
   m.effectiveShear = effectiveShearModulus(A.youngsModulus, A.poissonRatio, B.youngsModulus, B.poissonRatio);
   m.poissonRatio = 0.5 * (A.poissonRatio + B.poissonRatio);
   m.friction = std::min(A.friction, B.friction);
-  m.yieldStrength = std::min(A.yieldStrength, B.yieldStrength);
   const double e = std::min(A.restitution, B.restitution);
   m.dampingRatio = restitutionDampingRatio(e);  // 0 for e = 1
   return m;
@@ -51,7 +50,11 @@ ContactModel World::defaultContactModel(std::uint32_t ma, std::uint32_t mb) cons
 
 void World::setContactModel(std::uint32_t ma, std::uint32_t mb, const ContactModel& model) {
   const std::size_t n = materials_.size();
-  models_.at(ma * n + mb) = models_.at(mb * n + ma) = model;
+  double largest = 0.0;
+  for (const Superquadric& s : shapes_) largest = std::max(largest, s.volumeEquivalentRadius());
+  ContactModel m = model;
+  m.reach = normalReach(m.normal, m.effectiveModulus, m.capFactor * largest);
+  models_.at(ma * n + mb) = models_.at(mb * n + ma) = m;
   modelSet_[ma * n + mb] = modelSet_[mb * n + ma] = true;
 }
 
@@ -77,7 +80,7 @@ void World::detect(Contact& c) const {
     c.separation -= dt_ * (p.velocity[c.a].norm() + p.velocity[c.b].norm() +
                            p.angularVelocity[c.a].norm() * boundingRadius_[c.a] +
                            p.angularVelocity[c.b].norm() * boundingRadius_[c.b]);
-    if (c.separation > lawOf(c).range()) {  // rough contacts act from a gap of range() on
+    if (c.separation > lawOf(c).reach) {  // rough and adhesive contacts act across gaps up to reach
       c.geometry = ContactGeometry{};  // status Separated, no iterations
       return;
     }
@@ -165,7 +168,7 @@ void World::indexInvolvement() {
 
 double World::largestRange() const {
   double range = 0.0;
-  for (const ContactModel& m : models_) range = std::max(range, m.range());
+  for (const ContactModel& m : models_) range = std::max(range, m.reach);
   return range;
 }
 
@@ -206,20 +209,26 @@ void World::computeForces() {
   const auto lawStart = Clock::now();
   timing_.detection += seconds(lawStart - detected);
   // Laws, and per contact the step's statistics and whether it carries force.
-  long long calls = 0, iterations = 0, failures = 0, deep = 0;
+  long long calls = 0, iterations = 0, failures = 0, deep = 0, lost = 0, invalid = 0;
   long long byStatus[contactStatusCount] = {};
   acting_.resize(pairs_.size());
   loads_.resize(pairs_.size());
-#pragma omp parallel for schedule(dynamic, 64) reduction(+ : calls, iterations, failures, deep, byStatus[:contactStatusCount])
+#pragma omp parallel for schedule(dynamic, 64) reduction(+ : calls, iterations, failures, deep, lost, invalid, byStatus[:contactStatusCount])
   for (std::ptrdiff_t k = 0; k < count; ++k) {
     Contact& c = pairs_[k];
-    const bool acting = interacting(c);  // else a gap, kept as the next step's warm start or cull
-    if (acting) {
+    // Out of its law's range a pair is a gap, kept as the next step's warm start or cull, and
+    // its history ends; within range the law acts, or keeps its history without acting (a
+    // detached contact inside a plastic dent).
+    const bool inRange = interacting(c);
+    if (inRange) {
       applyLaw(c);
+      invalid += !c.force.valid;
     } else {
-      c.force = {};
-      c.history = {};  // out of the law's range: the history ends
+      lost += std::isinf(c.history.range(lawOf(c)));  // an adhesive contact its law still held
+      c.force = {.acting = false};
+      c.history = {};
     }
+    const bool acting = c.force.acting;
     const ContactGeometry& g = c.geometry;
     if (!c.onWall()) {
       ++calls;
@@ -240,6 +249,8 @@ void World::computeForces() {
   statistics_.detectorFailures += failures;
   for (int k = 0; k < contactStatusCount; ++k) statistics_.failuresByStatus[k] += byStatus[k];
   statistics_.deepOverlaps += deep;
+  statistics_.lostAdhesions += lost;
+  statistics_.lawFailures += invalid;
   const auto reduction = Clock::now();
   timing_.law += seconds(reduction - lawStart);
 

@@ -4,7 +4,7 @@
 out="$scratch/out"
 marker="$scratch/PWNED"
 base='"material": {"youngs_modulus": 1e9, "poisson_ratio": 0.3}, "path": {"points": [0, 1e-8, 0]},
-  "curves": [{"label": "c", "geometry": {"radii": [1e-6, 1e-6]}, "law": {"type": "hertz"}}]'
+  "curves": [{"label": "c", "geometry": {"radii": [1e-6, 1e-6]}, "law": {"type": "elliptic_hertz"}}]'
 
 hostile=(
   "x'\\nsystem('touch $marker')\\nset title 'y"

@@ -65,7 +65,7 @@ expect_error "sticking-velocity hex" 1 "option --density = '0x10'" \
   "$sqdem" sticking-velocity --radius 2e-6 $(echo "$sv" | sed 's/--density 1350/--density 0x10/')
 far='{"material": {"youngs_modulus": 1e9, "poisson_ratio": 0.3}, "path": {"points": [0, 9, 0], "unit": "m", "steps": 5},
  "curves": [{"label": "c", "geometry": {"particles": [{"a": 5e-6, "b": 5e-6, "c": 5e-6, "centre": [0, 0, 0]},
- {"a": 5e-6, "b": 5e-6, "c": 5e-6, "centre": [1e-5, 0, 0]}]}, "law": {"type": "hertz"}}]}'
+ {"a": 5e-6, "b": 5e-6, "c": 5e-6, "centre": [1e-5, 0, 0]}]}, "law": {"type": "elliptic_hertz"}}]}'
 echo "$far" > "$scratch/far.json"
 expect_error "contact with detector failures" 1 "could not resolve.*--allow-detector-failures" \
   "$sqdem" contact "$scratch/far.json" --out "$scratch/far"

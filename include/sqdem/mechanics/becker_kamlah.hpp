@@ -29,6 +29,8 @@
 // computed once per contact. Finite deformations (c/r > 0.16..0.4) are outside its validity.
 
 #include "sqdem/mechanics/elliptic.hpp"
+#include "sqdem/mechanics/law_input.hpp"
+#include "sqdem/mechanics/normal_law.hpp"
 
 namespace sqdem {
 
@@ -84,6 +86,25 @@ class BeckerKamlah {
   BeckerFactors g_;
   BeckerKamlahParameters p_;
   double pY_, cY_, deltaY_, forceY_, deltaMax_;
+};
+
+/// normal: becker_kamlah (normal_law.hpp component) on the detector's curvatures. Keys:
+/// yield_strength Y (Pa; default the weaker material's), plastic_transition (default true),
+/// lambda_max and epsilon_max (both or neither; neither: the NMC fits of Eq. 54 per contact with
+/// r_IJ = NormalContact::radiusSum), exponent n of Eq. 28 (default 1.8). Area pi c^2; S_n for the
+/// damping is the elliptic Hertz stiffness 2 E* gamma (Rc delta)^1/2. History: the largest overlap.
+struct BeckerKamlahLaw {
+  using History = BeckerKamlahHistory;
+  static constexpr std::array<std::string_view, 5> keys{"yield_strength", "plastic_transition", "lambda_max", "epsilon_max",
+                                                        "exponent"};
+  BeckerKamlahParameters parameters;  ///< effectiveModulus is taken from each contact
+
+  static BeckerKamlahLaw read(const LawInput& in, const PairElasticity& pair);
+  /// The parameters at this contact: E*, and l_max, e_max from the NMC fits when not given.
+  BeckerKamlahParameters at(const NormalContact& c, const BeckerFactors& geometry) const;
+  NormalResponse force(const NormalContact& c, double overlap, History& h) const;
+  double range(const History&) const { return 0.0; }
+  double reach(double, double) const { return 0.0; }
 };
 
 }  // namespace sqdem

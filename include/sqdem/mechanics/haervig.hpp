@@ -17,6 +17,8 @@
 
 #include "sqdem/math/types.hpp"
 #include "sqdem/mechanics/jkr_circular.hpp"
+#include "sqdem/mechanics/law_input.hpp"
+#include "sqdem/mechanics/normal_law.hpp"
 
 namespace sqdem {
 
@@ -59,6 +61,26 @@ struct HaervigRolling {
 
   /// k_r xi with k_r = 4 F_C (a/a_0)^3/2; a/a_0 from the (possibly modified) contact.
   double torque(double& xi, double radiusRatio) const;
+};
+
+/// normal: haervig_jkr (normal_law.hpp component): the simplified JKR of Eqs. 7-10 on the
+/// Hertz-equivalent sphere R* = gamma^2 Rc of the elliptic contact (the sphere whose Hertz force
+/// equals the elliptic one, 004 Eq. 1). Key: surface_energy gamma (J/m^2, W = 2 gamma); with
+/// reduced_stiffness the law uses gamma_mod of Eq. 24. It acts for delta > 0 only (the simplified
+/// model breaks the contact at delta = 0). A = pi Rc beta delta and S_n = 2 E* gamma (Rc delta)^1/2
+/// as for elliptic Hertz; pull-off F_C = 3 pi gamma_mod R*. No history.
+struct HaervigJkrLaw {
+  struct History {};
+  static constexpr std::array<std::string_view, 1> keys{"surface_energy"};
+  double surfaceEnergy = 0.0;      ///< gamma_mod (J/m^2), what the law uses
+  double realSurfaceEnergy = 0.0;  ///< gamma of the real material (J/m^2), for the rolling resistance
+
+  static HaervigJkrLaw read(const LawInput& in, const PairElasticity& pair);
+  /// The JKR contact of Eqs. 7-10 at this contact (modified material).
+  HaervigJkr at(const NormalContact& c) const;
+  NormalResponse force(const NormalContact& c, double overlap, History&) const;
+  double range(const History&) const { return 0.0; }
+  double reach(double, double) const { return 0.0; }
 };
 
 }  // namespace sqdem

@@ -12,10 +12,21 @@
 //   fully plastic      F = 2 pi delta sqrt(Ri Rj) c_h H                               (Eq. 43)
 // H hardness (Pa), K_v maximum-pressure factor at first yield (p_max = K_v H), c_h mean-pressure
 // factor in full plasticity, c_A the delta_2/delta_1 constant; E* (Pa), radii (m). The force is
-// continuous at delta_1 (mean Hertz pressure 2/3 K_v H there) and at delta_2 (tested). Loading
-// only: the seed gives no unloading branch, so it is not offered for cyclic use.
+// continuous at delta_1 (mean Hertz pressure 2/3 K_v H there) and at delta_2 (tested).
+//
+// Unloading (the seed gives none; our choice, in the spirit of Thornton-Ning and 002's
+// unloading): elastic Hertz recovery of the contact as last loaded. At the largest overlap
+// delta_m the loading curve carries F_m over the area A_m; an elastic elliptic Hertz contact
+// (factors gamma, beta of the contact) carrying both has the radius R' = A_m/(pi beta delta_e)
+// and the elastic overlap delta_e = 3 F_m / (4 E* gamma sqrt(A_m/(pi beta))) (004 Eqs. 1-2), so
+//   F = F_m ((delta - delta_p)/delta_e)^3/2, A = A_m (delta - delta_p)/delta_e,
+//   delta_p = delta_m - delta_e (the residual overlap), F = 0 below delta_p;
+// reloading follows the same curve back to delta_m. Below delta_1 it is the elastic loading
+// curve itself (delta_e = delta_m, no hysteresis).
 
 #include "sqdem/mechanics/elliptic.hpp"
+#include "sqdem/mechanics/law_input.hpp"
+#include "sqdem/mechanics/normal_law.hpp"
 
 namespace sqdem {
 
@@ -31,6 +42,12 @@ class JamariElasticPlastic {
  public:
   JamariElasticPlastic(const RelativeRadii& radii, const HertzFactors& factors, const JamariParameters& p);
   double loadingForce(double overlap) const;  ///< (N)
+  double loadingArea(double overlap) const;   ///< A of Eq. 2, 46 or 43 (m^2)
+  /// Force and area at `overlap` after the largest overlap `maxOverlap` (above).
+  struct Point {
+    double force, area;
+  };
+  Point at(double overlap, double maxOverlap) const;
   double yieldOverlap() const { return delta1_; }          ///< delta_1 (m)
   double fullyPlasticOverlap() const { return delta2_; }   ///< delta_2 (m)
 
@@ -39,6 +56,25 @@ class JamariElasticPlastic {
   HertzFactors h_;
   JamariParameters p_;
   double delta1_, delta2_;
+};
+
+/// normal: jamari (normal_law.hpp component) on the detector's curvatures, with the unloading
+/// above. Keys: hardness H (Pa), max_pressure_factor K_v (default 0.454 + 0.41 nu, 000 after
+/// Eq. 33), mean_pressure_factor c_h (default 1: H is the fully plastic mean pressure),
+/// plastic_overlap_factor c_A (default 220: delta_2 = 110 delta_1 for a circle, Eq. 44). No
+/// reduced_stiffness. S_n = 2 E* sqrt(A/pi). History: the largest overlap.
+struct JamariLaw {
+  struct History {
+    double maxOverlap = 0.0;  ///< (m)
+  };
+  static constexpr std::array<std::string_view, 4> keys{"hardness", "max_pressure_factor", "mean_pressure_factor",
+                                                        "plastic_overlap_factor"};
+  JamariParameters parameters;  ///< effectiveModulus is taken from each contact
+
+  static JamariLaw read(const LawInput& in, const PairElasticity& pair);
+  NormalResponse force(const NormalContact& c, double overlap, History& h) const;
+  double range(const History&) const { return 0.0; }
+  double reach(double, double) const { return 0.0; }
 };
 
 }  // namespace sqdem

@@ -29,6 +29,8 @@
 
 #include "sqdem/mechanics/elliptic.hpp"
 #include "sqdem/mechanics/jkr_circular.hpp"
+#include "sqdem/mechanics/law_input.hpp"
+#include "sqdem/mechanics/normal_law.hpp"
 
 namespace sqdem {
 
@@ -76,6 +78,26 @@ class EllipticJkr {
   double forceScale_, overlapScale_, areaScale_;
   double gHertz_ = 1.0, gDetach_ = 1.0;
   double pullOffForce_ = 0.0, detachmentOverlap_ = 0.0;
+};
+
+/// normal: elliptic_jkr (normal_law.hpp component): Johnson-Greenwood with the contact's relative
+/// radii. Key: surface_energy gamma (J/m^2), W = 2 gamma; with reduced_stiffness gamma_mod of
+/// 001 Eq. 24. Snap-in when the overlap first reaches 0, detachment below the detachment overlap;
+/// while attached its range is unbounded (the law detaches). S_n = 2 E* sqrt(A/pi), the normal
+/// stiffness of a contact of area A (flat punch): finite at detachment, where dF/d(delta) is not.
+/// History: attached. A pull-off |F| of the contact counts as F_C in the Coulomb limit.
+struct EllipticJkrLaw {
+  using History = JkrHistory;
+  static constexpr std::array<std::string_view, 1> keys{"surface_energy"};
+  double surfaceEnergy = 0.0;  ///< gamma (J/m^2) the law uses, W = 2 gamma
+
+  static EllipticJkrLaw read(const LawInput& in, const PairElasticity& pair);
+  EllipticJkr at(const NormalContact& c) const { return {c.effectiveModulus, 2.0 * surfaceEnergy, c.radii}; }
+  NormalResponse force(const NormalContact& c, double overlap, History& h) const;
+  double range(const History& h) const;
+  /// |detachment overlap| of the circular contact of radius R, times 2 (a bound for the elliptic
+  /// ones of the same R_c1 = sqrt(Ri Rj) <= R; tests/jkr_test.cpp checks it over the ratios).
+  double reach(double effectiveModulus, double R) const;
 };
 
 }  // namespace sqdem

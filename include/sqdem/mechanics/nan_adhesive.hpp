@@ -33,6 +33,9 @@
 // Units: forces N, overlaps m, stiffnesses N/m, W (work of adhesion, the seed's Gamma) J/m^2,
 // p_y (yield contact pressure, the softer body's) Pa.
 
+#include "sqdem/mechanics/law_input.hpp"
+#include "sqdem/mechanics/normal_law.hpp"
+
 namespace sqdem {
 
 struct NanParameters {
@@ -87,5 +90,30 @@ class NanAdhesivePlastic {
 
 /// 000 Eq. 68: 2 sqrt(m/k_e) (s) (the Rayleigh time of Eq. 71 is in dynamics/rayleigh_time.hpp).
 double nanCriticalTimeStep(double mass, double stiffness);
+
+/// normal: nan_adhesive (normal_law.hpp component) on R* = gamma^2 Rc (above). Keys:
+/// surface_energy gamma (J/m^2, W = 2 gamma), yield_pressure p_y (Pa), elastic_stiffness k_el
+/// and plastic_stiffness k_p (N/m, default Eq. 52 and k_el). No reduced_stiffness (000 gives no
+/// rule). Snap-in at alpha = 0, detachment below alpha_jp; while attached its range is unbounded.
+/// S_n = the slope of the branch in use (k_e, k_p or k_c). History: attached, alpha_max. A contact
+/// whose R* the parameters do not admit (Eq. 36 gives k_cl < 0: too small an R* for this k_el)
+/// answers valid = false; the engine counts it (WorldStatistics::lawFailures).
+struct NanAdhesiveLaw {
+  using History = NanHistory;
+  static constexpr std::array<std::string_view, 4> keys{"surface_energy", "yield_pressure", "elastic_stiffness",
+                                                        "plastic_stiffness"};
+  double surfaceEnergy = 0.0;     ///< gamma (J/m^2)
+  double yieldPressure = 0.0;     ///< p_y (Pa)
+  double elasticStiffness = 0.0;  ///< k_el (N/m), 0: Eq. 52
+  double plasticStiffness = 0.0;  ///< k_p (N/m), 0: k_el
+
+  static NanAdhesiveLaw read(const LawInput& in, const PairElasticity& pair);
+  /// The law at this contact; throws std::invalid_argument when its parameters admit none.
+  NanAdhesivePlastic at(const NormalContact& c) const;
+  NormalResponse force(const NormalContact& c, double overlap, History& h) const;
+  double range(const History& h) const;
+  /// 2 |alpha_jp| before yield for R* = R; throws like at().
+  double reach(double effectiveModulus, double R) const;
+};
 
 }  // namespace sqdem

@@ -18,6 +18,8 @@
 //
 // N asperity density (1/m^2), A_n nominal contact area (m^2), sigma_s (m), E* (Pa), R_c (m).
 
+#include "sqdem/mechanics/normal_law.hpp"
+
 namespace sqdem {
 
 double greenwoodWilliamsonForceIntegral(double h);  ///< F_3/2(h), dimensionless
@@ -31,6 +33,19 @@ struct RoughContact {
   double force(double effectiveModulus, double Rc, double gamma, double h) const;
   /// Eq. 34 (m^2); beta the smooth-contact area factor.
   double area(double Rc, double beta, double h) const;
+};
+
+/// normal: elliptic_hertz (or volume_sphere_hertz) with `roughness: {sigma, asperity_count}`
+/// (normal_law.hpp component): Eqs. 33-34 in place of the smooth force, h = -delta/sigma_s the
+/// separation of the mean surfaces (the detector's overlap, < 0 for a gap); it acts from a gap
+/// of 4 sigma_s (F_3/2(4)/F_3/2(0) = 1.0e-5). S_n = dF/d(delta) by central differences.
+struct GreenwoodWilliamsonLaw {
+  struct History {};
+  RoughContact rough;
+
+  NormalResponse force(const NormalContact& c, double overlap, History&) const;
+  double range(const History&) const { return 4.0 * rough.sigma; }
+  double reach(double, double) const { return 4.0 * rough.sigma; }
 };
 
 }  // namespace sqdem

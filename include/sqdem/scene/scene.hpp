@@ -40,18 +40,17 @@ struct ShapeFamily {
 
 struct InteractionSpec {
   std::uint32_t materialA = 0, materialB = 0;
-  NormalLaw normal = NormalLaw::EllipticHertz;
+  std::string normalName = "elliptic_hertz";  ///< its name in the registry (law_registry.hpp)
+  NormalLaw normal = HertzLaw{};
+  bool curvatures = true;       ///< the normal law works on the detector's curvatures
+  std::vector<std::pair<std::string, double>> lawParameters;  ///< every key the law read, with its value
   TangentialLaw tangential = TangentialLaw::EllipticMindlin;
   EccentricityMethod eccentricity = EccentricityMethod::Tabulated;
   double capFactor = 10.0;
   double restitution = 0.0;     ///< pair restitution e (0: min of the materials'), sets the damping
   double friction = -1.0;       ///< pair friction mu (< 0: min of the materials')
   double stiffnessScale = 1.0;  ///< reduced-stiffness factor E_mod/E (001 Eq. 24)
-  double surfaceEnergy = 0.0;   ///< gamma (J/m^2) of the real material; 0: no adhesion
-  double roughnessSigma = 0.0, asperityCount = 0.0;  ///< Greenwood-Williamson sigma_s (m), N A_n (0: smooth)
-  double rollingHysteresis = 0.0;  ///< dgamma/gamma of the rolling resistance (0: off, needs adhesion)
-  bool plasticTransition = true;  ///< Becker-Kamlah: lambda(c) transition (false: elastic - fully plastic)
-  double lambdaMax = 0.0, epsilonMax = 0.0;  ///< Becker-Kamlah: explicit l_max, e_max (0: NMC fits)
+  double rollingHysteresis = 0.0;  ///< dgamma/gamma of the rolling resistance (0: off, needs haervig_jkr)
 };
 
 struct WallSpec {

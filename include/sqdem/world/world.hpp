@@ -69,7 +69,7 @@ struct Contact {
   std::uint32_t a = 0, b = 0;
   Vec3 shift = Vec3::Zero();    ///< periodic image offset of b (m)
   ContactGeometry geometry;     ///< last solution: warm start for the next step
-  ContactHistory history;       ///< tangential spring, plastic state
+  ContactHistory history;       ///< tangential spring, rolling displacement, the normal law's record
   ContactForce force;           ///< force on b from the last step
   /// When the last solve found the pair Separated: a lower bound of its gap (m), reduced every
   /// step by a bound of the motion since; the pair is not solved again while it stays > 0.
@@ -86,6 +86,10 @@ struct WorldStatistics {
   /// detectorFailures by ContactStatus (index = the status's value).
   std::array<long long, contactStatusCount> failuresByStatus{};
   long long deepOverlaps = 0;      ///< contacts with overlap > 0.5 R_vol (time step too large?)
+  /// Adhesive contacts lost while their law still held them (the detector gave no geometry
+  /// within its cut-off): should stay 0, the cut-off covers ContactModel::reach.
+  long long lostAdhesions = 0;
+  long long lawFailures = 0;       ///< contacts whose law had no valid form (NormalResponse::valid)
 };
 
 /// Wall-clock seconds spent in each part of the step (accumulated).
@@ -104,6 +108,9 @@ class World {
         BroadPhase search = BroadPhase::CellList);
 
   /// Sets the law of a material pair (symmetric); every pair must be set before the first step.
+  /// Sets the model's reach from the shapes (the normal law's reach at relative radius
+  /// capFactor x the largest volume radius); throws std::invalid_argument when the law admits
+  /// no contact of that size.
   void setContactModel(std::uint32_t materialA, std::uint32_t materialB, const ContactModel& model);
   const ContactModel& contactModel(std::uint32_t materialA, std::uint32_t materialB) const { return model(materialA, materialB); }
   /// The default law from two materials: elliptic Hertz, pair friction/restitution.
@@ -177,8 +184,11 @@ class World {
   const ContactModel& lawOf(const Contact& c) const {
     return model(particles_.material[c.a], c.onWall() ? walls_[c.b & ~wallFlag].material : particles_.material[c.b]);
   }
-  /// Within its law's range: touching, or a rough contact's gap below 4 sigma.
-  bool interacting(const Contact& c) const { return c.geometry.converged() && c.geometry.overlap > -lawOf(c).range(); }
+  /// Within its law's range (touching, a rough contact's gap below 4 sigma, an adhesive contact
+  /// until it detaches).
+  bool interacting(const Contact& c) const {
+    return c.geometry.converged() && c.geometry.overlap > -c.history.range(lawOf(c));
+  }
   /// The candidate list from the neighbour list and the walls within reach, carrying the
   /// histories of persisting pairs; kept until the next rebuild (particles or walls moved more
   /// than half the skin), so steps in between copy no contact records.

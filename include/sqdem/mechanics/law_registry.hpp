@@ -1,0 +1,73 @@
+#pragma once
+// The normal contact laws by name: one registry for the scene loader (`interactions[k].normal`),
+// the engine (contact_model.hpp holds the chosen law) and the single-contact driver
+// (`sqdem contact`, its `law.type`). Each entry reads and validates the law's own keys from a
+// LawInput; the law is then a value of NormalLaw, evaluated by static dispatch (std::visit).
+//
+//   name                 component               seed, equations                  history
+//   elliptic_hertz       HertzLaw                004 Eqs. 1-2, 11-14              -
+//     + roughness {sigma, asperity_count}: GreenwoodWilliamsonLaw, 004 Eqs. 29-36  -
+//   volume_sphere_hertz  HertzLaw on the volume-equivalent spheres (no curvatures)  -
+//   becker_kamlah        BeckerKamlahLaw         002 Eqs. 1-54                    largest overlap
+//   haervig_jkr          HaervigJkrLaw           001 Eqs. 7-10, 24                -
+//   elliptic_jkr         EllipticJkrLaw          004 Eqs. 19-28, 001 Eq. 24       attached
+//   nan_adhesive         NanAdhesiveLaw          000 Eqs. 1-67                    attached, alpha_max
+//   jamari               JamariLaw               004 Eqs. 41-46 + elastic unloading  largest overlap
+
+#include <span>
+#include <string_view>
+#include <variant>
+
+#include "sqdem/mechanics/becker_kamlah.hpp"
+#include "sqdem/mechanics/haervig.hpp"
+#include "sqdem/mechanics/hertz_law.hpp"
+#include "sqdem/mechanics/jamari.hpp"
+#include "sqdem/mechanics/jkr_elliptic.hpp"
+#include "sqdem/mechanics/law_input.hpp"
+#include "sqdem/mechanics/nan_adhesive.hpp"
+#include "sqdem/mechanics/roughness_gw.hpp"
+
+namespace sqdem {
+
+using NormalLaw = std::variant<HertzLaw, GreenwoodWilliamsonLaw, BeckerKamlahLaw, HaervigJkrLaw, EllipticJkrLaw,
+                               NanAdhesiveLaw, JamariLaw>;
+
+struct NormalLawEntry {
+  std::string_view name;
+  bool curvatures;  ///< uses the detector's curvatures (else the volume-equivalent spheres)
+  bool adhesive;    ///< acts across gaps while attached, pull-off force F_C
+  std::span<const std::string_view> keys;  ///< the law's own keys
+  NormalLaw (*read)(const LawInput& in, const PairElasticity& pair);
+};
+
+std::span<const NormalLawEntry> normalLaws();
+/// The entry named `name`; `in.fail(key, ...)` listing the names when there is none.
+const NormalLawEntry& normalLaw(std::string_view name, const LawInput& in, std::string_view key);
+/// The law of `entry` from `in`: every key present must be the source's or the law's (a key of
+/// another law is named as such), then the law validates its values.
+NormalLaw readNormalLaw(const NormalLawEntry& entry, const LawInput& in, const PairElasticity& pair);
+
+/// A law's response through its own history type, kept in a contact's NormalHistory slot.
+inline NormalResponse normalResponse(const NormalLaw& law, const NormalContact& c, double overlap, NormalHistory& slot) {
+  return std::visit(
+      [&](const auto& l) {
+        auto h = slot.load<typename std::decay_t<decltype(l)>::History>();
+        const NormalResponse r = l.force(c, overlap, h);
+        slot.store(h);
+        return r;
+      },
+      law);
+}
+
+/// range(history) of normal_law.hpp (m).
+inline double normalRange(const NormalLaw& law, const NormalHistory& slot) {
+  return std::visit([&](const auto& l) { return l.range(slot.load<typename std::decay_t<decltype(l)>::History>()); }, law);
+}
+
+/// reach(E*, R) of normal_law.hpp (m); throws std::invalid_argument when the law admits no
+/// contact of relative radius R.
+inline double normalReach(const NormalLaw& law, double effectiveModulus, double R) {
+  return std::visit([&](const auto& l) { return l.reach(effectiveModulus, R); }, law);
+}
+
+}  // namespace sqdem

@@ -1,0 +1,77 @@
+#pragma once
+// What every normal contact law is (DESIGN.md §2, "a law is a value type"): its parameters,
+// read and validated once from a LawInput (law_registry.hpp); a History record of its own,
+// trivially copyable, whose all-zero bytes are a fresh contact's; and three functions:
+//   force(contact, overlap, history)  the rate-independent normal response at this overlap,
+//                                      updating the history (damping is added by the pair
+//                                      composition, interaction of the world: contact_model.hpp)
+//   range(history)                     the largest gap (m) it acts across in this state: 0 for
+//                                      touching-only laws, 4 sigma for rough contacts, infinite
+//                                      for an attached adhesive contact (it then decides itself
+//                                      where it detaches); the pair keeps its history while
+//                                      within range, also when the law does not act there
+//   reach(E*, R)                       a bound of range() over every state and every contact
+//                                      whose relative radii are at most R (m): the candidate
+//                                      search and the detector's cut-off reach that far.
+
+#include <array>
+#include <string_view>
+#include <concepts>
+#include <cstddef>
+#include <cstring>
+#include <type_traits>
+#include <utility>
+
+#include "sqdem/mechanics/elliptic.hpp"
+
+namespace sqdem {
+
+/// What a normal law sees of a contact.
+struct NormalContact {
+  RelativeRadii radii;          ///< relative principal radii (m); volume spheres: Ri = Rj = R*
+  HertzFactors factors;         ///< elliptic Hertz e^2, gamma, beta, K, D (circle for volume spheres)
+  double effectiveModulus = 0;  ///< E* (Pa)
+  double radiusSum = 0;         ///< r_IJ = R_vol,A + R_vol,B (m; a wall: 2 R_vol,A), 002 Eq. 54
+};
+
+struct NormalResponse {
+  double force = 0.0;      ///< rate-independent normal force (N), > 0 repulsive
+  double stiffness = 0.0;  ///< S_n (N/m) for the viscous damping (see each law)
+  double area = 0.0;       ///< contact area (m^2)
+  double pullOff = 0.0;    ///< F_C (N, >= 0) of an adhesive law: Coulomb limit mu |F_n + 2 F_C| (001 Eq. 17)
+  bool acting = true;      ///< false: no contact (not yet formed, or detached): no force
+  bool valid = true;       ///< false (with acting false): the law's parameters admit no contact here
+  const char* regime = "elastic";  ///< branch name, for the single-contact driver
+};
+
+template <class L>
+concept NormalLawComponent = std::is_trivially_copyable_v<typename L::History> &&
+    requires(const L& law, const NormalContact& c, typename L::History& h) {
+      { law.force(c, 0.0, h) } -> std::same_as<NormalResponse>;
+      { law.range(std::as_const(h)) } -> std::convertible_to<double>;
+      { law.reach(0.0, 0.0) } -> std::convertible_to<double>;
+    };
+
+/// A contact's normal-law history record: fixed size, so contact records stay flat and
+/// trivially copyable; the law's own History is copied in and out of it.
+class NormalHistory {
+ public:
+  template <class H>
+  H load() const {
+    static_assert(sizeof(H) <= capacity && std::is_trivially_copyable_v<H>);
+    H h;
+    std::memcpy(&h, bytes_.data(), sizeof(H));
+    return h;
+  }
+  template <class H>
+  void store(const H& h) {
+    static_assert(sizeof(H) <= capacity && std::is_trivially_copyable_v<H>);
+    std::memcpy(bytes_.data(), &h, sizeof(H));
+  }
+
+ private:
+  static constexpr std::size_t capacity = 16;
+  alignas(8) std::array<std::byte, capacity> bytes_{};
+};
+
+}  // namespace sqdem

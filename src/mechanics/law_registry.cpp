@@ -1,0 +1,76 @@
+#include "sqdem/mechanics/law_registry.hpp"
+
+#include <algorithm>
+#include <array>
+#include <string>
+#include <vector>
+
+namespace sqdem {
+namespace {
+
+static_assert(NormalLawComponent<HertzLaw> && NormalLawComponent<GreenwoodWilliamsonLaw> &&
+              NormalLawComponent<BeckerKamlahLaw> && NormalLawComponent<HaervigJkrLaw> &&
+              NormalLawComponent<EllipticJkrLaw> && NormalLawComponent<NanAdhesiveLaw> && NormalLawComponent<JamariLaw>);
+
+/// Refuses any key of `in` that is not in `allowed` (`what` names whose keys they are).
+void allowOnly(const LawInput& in, std::span<const std::string_view> allowed, std::string_view what);
+
+constexpr std::array<std::string_view, 1> hertzKeys{"roughness"};
+constexpr std::array<std::string_view, 2> roughnessKeys{"sigma", "asperity_count"};
+
+/// elliptic_hertz and volume_sphere_hertz: smooth, or Greenwood-Williamson with `roughness`.
+NormalLaw readHertz(const LawInput& in, const PairElasticity&) {
+  if (!in.has("roughness")) return HertzLaw{};
+  const auto rough = in.child("roughness");
+  allowOnly(*rough, roughnessKeys, "roughness");
+  return GreenwoodWilliamsonLaw{{.asperityCount = rough->positive("asperity_count", "-, N A_n, asperities on the nominal contact area"),
+                                 .sigma = rough->positive("sigma", "m, standard deviation of asperity heights")}};
+}
+
+template <class L>
+NormalLaw readAs(const LawInput& in, const PairElasticity& pair) {
+  return L::read(in, pair);
+}
+
+constexpr std::array entries{
+    NormalLawEntry{"elliptic_hertz", true, false, hertzKeys, readHertz},
+    NormalLawEntry{"volume_sphere_hertz", false, false, hertzKeys, readHertz},
+    NormalLawEntry{"becker_kamlah", true, false, BeckerKamlahLaw::keys, readAs<BeckerKamlahLaw>},
+    NormalLawEntry{"haervig_jkr", true, true, HaervigJkrLaw::keys, readAs<HaervigJkrLaw>},
+    NormalLawEntry{"elliptic_jkr", true, true, EllipticJkrLaw::keys, readAs<EllipticJkrLaw>},
+    NormalLawEntry{"nan_adhesive", true, true, NanAdhesiveLaw::keys, readAs<NanAdhesiveLaw>},
+    NormalLawEntry{"jamari", true, false, JamariLaw::keys, readAs<JamariLaw>},
+};
+
+void allowOnly(const LawInput& in, std::span<const std::string_view> allowed, std::string_view what) {
+  for (const std::string& key : in.keys()) {
+    if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
+    std::vector<std::string_view> owners;
+    for (const NormalLawEntry& e : entries) {
+      if (std::find(e.keys.begin(), e.keys.end(), key) != e.keys.end()) owners.push_back(e.name);
+    }
+    const std::string own = in.ownKeys(), lawKeys = std::string(what) + ": " + (allowed.empty() ? "none" : joinKeys(allowed));
+    in.fail(key, "unknown key (allowed: " + (own.empty() ? lawKeys : own + ", and for " + lawKeys) + ")" +
+                     (owners.empty() ? "" : "; '" + key + "' is a key of normal: " + joinKeys(owners)));
+  }
+}
+
+}  // namespace
+
+NormalLaw readNormalLaw(const NormalLawEntry& entry, const LawInput& in, const PairElasticity& pair) {
+  allowOnly(in, entry.keys, entry.name);
+  return entry.read(in, pair);
+}
+
+std::span<const NormalLawEntry> normalLaws() { return entries; }
+
+const NormalLawEntry& normalLaw(std::string_view name, const LawInput& in, std::string_view key) {
+  std::vector<std::string_view> names;
+  for (const NormalLawEntry& e : entries) {
+    if (e.name == name) return e;
+    names.push_back(e.name);
+  }
+  in.fail(key, "unknown law '" + std::string(name) + "' (allowed: " + joinKeys(names) + ")");
+}
+
+}  // namespace sqdem
