@@ -161,3 +161,26 @@ TEST(EllipticJkr, ContinuousWhereTheEvaluationRouteChanges) {
 
 }  // namespace
 }  // namespace sqdem
+
+namespace sqdem {
+namespace {
+
+// EllipticJkrLaw::reach (the candidate search's bound of the gap an attached contact spans):
+// 2 |delta_d| of the circle of radius R bounds the detachment overlap of every elliptic contact
+// with R_c1 = sqrt(Ri Rj) <= R, here over Ri/Rj from 1 down to 1e-4 at R_c1 = R.
+TEST(EllipticJkr, ReachBoundsTheDetachmentGapOfEveryEllipse) {
+  const double E = 1e9, gamma = 0.05, R = 1e-5;
+  const double reach = EllipticJkrLaw{gamma}.reach(E, R);
+  double widest = 0.0;
+  for (double ratio = 1.0; ratio >= 1e-4; ratio *= 0.5) {
+    const double lambda = std::sqrt(ratio);
+    const double Ri = R * lambda, Rj = R / lambda;
+    const EllipticJkr law(E, 2.0 * gamma, RelativeRadii{Ri, Rj, 1.0, Ri * Rj / (Ri + Rj)});
+    widest = std::max(widest, -law.detachmentOverlap());
+  }
+  std::printf("widest detachment gap %.4e m, reach %.4e m (%.2f x)\n", widest, reach, reach / widest);
+  EXPECT_LE(widest, reach);
+}
+
+}  // namespace
+}  // namespace sqdem
