@@ -9,6 +9,7 @@
 #include <numbers>
 #include <fstream>
 
+#include "sqdem/scene/particle_file.hpp"
 #include "sqdem/scene/scene_loader.hpp"
 #include "sqdem/scene/build_world.hpp"
 #include "sqdem/world/checkpoint_file.hpp"
@@ -219,13 +220,86 @@ TEST(Engine, HilbertReorderingKeepsForcesAndHistories) {
 void expectSceneError(const std::string& text, const std::string& expected) {
   const std::string path = writeScene("bad", text);
   try {
-    loadScene(path);
+    buildWorld(loadScene(path));  // the loader checks the keys, the builder the placement
     ADD_FAILURE() << "no error for: " << expected;
   } catch (const SceneError& e) {
     EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
   }
 }
+
+// Explicit particles: the `particles:` list places each particle with its pose and velocities,
+// and a particle file written from a world (particle_file.hpp) inserts the same particles: shapes,
+// materials, centres and velocities bit for bit, orientations (normalised again) and angular
+// velocities (kept as the conjugate momentum) to round-off.
+TEST(Engine, ExplicitParticlesAndParticleFilesRoundTrip) {
+  const std::string listed = replaced(replaced(bedScene, "  grains: {", "  ball: {semi_axes: [0.5e-3, 0.5e-3, 0.4e-3]}\n  grains: {"),
+                                      "insert:\n", "particles:\n"
+                                      "  - {shape: ball, material: glass, centre: [1.0e-3, 2.0e-3, 3.0e-3], quaternion: [0.8, 0.6, 0, 0],\n"
+                                      "     velocity: [0.1, 0, -0.2], angular_velocity: [0, 5, 0]}\n"
+                                      "  - {shape: ball, material: glass, centre: [4.0e-3, 2.0e-3, 3.0e-3]}\n"
+                                      "insert:\n");
+  const World world = buildWorld(loadScene(writeScene("listed", listed)));
+  ASSERT_EQ(world.particles().size(), 62u);
+  const ParticleStore& p = world.particles();
+  EXPECT_EQ(p.position[0], Vec3(1.0e-3, 2.0e-3, 3.0e-3));
+  EXPECT_EQ(p.orientation[0].coeffs(), Quat(0.8, 0.6, 0.0, 0.0).coeffs());
+  EXPECT_EQ(p.velocity[0], Vec3(0.1, 0.0, -0.2));
+  EXPECT_LT((p.angularVelocity[0] - Vec3(0.0, 5.0, 0.0)).norm(), 1e-12);
+  // The shape family keeps semi-axes as a volume radius and aspect ratios: equal to round-off.
+  EXPECT_LT((world.shapes()[p.shape[1]].halfExtents() - Vec3(0.5e-3, 0.5e-3, 0.4e-3)).norm(), 1e-18);
+
+  World original = pouredBed(loadScene(writeScene("bed", bedScene)), 50.0, 20000);
+  const auto file = std::filesystem::temp_directory_path() / "sqdem_test_bed_particles.csv";
+  writeParticleFile(file, original, loadScene(writeScene("bed", bedScene)).materials);
+  const std::string restart = replaced(bedScene, "  - {count: 60, shape: grains, material: glass, region: {lo: [0, 0, 1.0e-3], hi: [6.0e-3, 6.0e-3, 11.0e-3]}}",
+                                       "  - {file: " + file.string() + ", allow_overlap: true}");
+  const World copy = buildWorld(loadScene(writeScene("restart", restart)));
+  ASSERT_EQ(copy.particles().size(), original.particles().size());
+  const ParticleStore &a = original.particles(), &b = copy.particles();
+  // The file is in id order and the copy numbers its rows from 0: the same ids.
+  std::vector<std::size_t> slotOf(b.size());
+  for (std::size_t j = 0; j < b.size(); ++j) slotOf[b.id[j]] = j;
+  double spin = 0.0, turn = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const std::size_t j = slotOf[a.id[i]];
+    EXPECT_EQ(copy.shapes()[b.shape[j]].halfExtents(), original.shapes()[a.shape[i]].halfExtents());
+    EXPECT_EQ(b.material[j], a.material[i]);
+    EXPECT_EQ(b.position[j], a.position[i]);
+    turn = std::max(turn, (b.orientation[j].coeffs() - a.orientation[i].coeffs()).norm());
+    EXPECT_EQ(b.velocity[j], a.velocity[i]);
+    spin = std::max(spin, (b.angularVelocity[j] - a.angularVelocity[i]).norm() / std::max(a.angularVelocity[i].norm(), 1e-30));
+  }
+  std::printf("60 particles through a particle file: orientation differs by %.2g, angular velocity by %.2g (relative)\n",
+              turn, spin);
+  EXPECT_LT(turn, 1e-15);
+  EXPECT_LT(spin, 1e-12);
+
+  const std::string strict = replaced(restart, "allow_overlap: true", "allow_overlap: false");
+  expectSceneError(strict, "overlaps");
+  expectSceneError(replaced(listed, "material: glass, centre: [4.0e-3", "material: glass, centre: [1.5e-3"),
+                   ": particles[0] overlaps particles[1] by");
+  expectSceneError(replaced(listed, "quaternion: [0.8, 0.6, 0, 0]", "quaternion: [1, 1, 0, 0]"),
+                   "'particles[0].quaternion': must be a unit quaternion [w, x, y, z]");
+  expectSceneError(replaced(listed, "{shape: ball, material: glass, centre: [4.0e-3", "{shape: grains, material: glass, centre: [4.0e-3"),
+                   "'particles[1].shape': shape 'grains' is a distribution");
+  expectSceneError(replaced(listed, "centre: [4.0e-3, 2.0e-3, 3.0e-3]", "centre: [4.0e-3, 2.0e-3, 13.0e-3]"),
+                   "particles[1]: the centre lies outside the domain along z");
+  std::string text;
+  {
+    std::ifstream in(file);
+    text.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  const auto corrupt = [&](const std::string& from, const std::string& to, const std::string& expected) {
+    std::ofstream(file) << replaced(text, from, to);
+    expectSceneError(restart, expected);
+  };
+  corrupt("material,a,", "material,A,", ":1: the first line must be the header 'material,a,b,c,n1,n2,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz'");
+  corrupt("\nglass,", "\nsteel,", ":2: 'material': 'steel' is not a material of the scene");
+  corrupt("\nglass,", "\nglass,nan", ":2: 'a': '");
+  corrupt("\nglass,", "\nglass,1,", ":2: 20 fields, the header has 19");
+}
+
 
 // insert.solid_fraction: particles are added until their volume reaches the fraction of the
 // region (the last one may overshoot by at most its own volume).

@@ -102,6 +102,10 @@ void printSummary(const World& world, const RunReport& report, double wall, cons
   if (m.betweenWallsFraction > 0.0) std::printf("final: solid fraction between the walls %.4f\n", m.betweenWallsFraction);
   std::printf("ParaView: open %s and %s\n", (output.directory / (output.name + "_particles.pvd")).string().c_str(),
               (output.directory / (output.name + "_contacts.pvd")).string().c_str());
+  if (!report.finalParticles.empty()) {
+    std::printf("final state: %s (a particle file: insert it into a scene with insert: [{file: ...}])\n",
+                report.finalParticles.string().c_str());
+  }
 }
 
 int runScene(const std::string& scenePath, fs::path outDir, int threads, const std::string& resume, bool overwrite) {

@@ -39,6 +39,27 @@ Vec3 minimumImage(Vec3 d, const Domain& domain) {
   return d;
 }
 
+/// Explicit particles may not start overlapping another particle or a wall unless their entry
+/// allows it: the contacts of a copy of the world at its initial state name the first offender.
+void refuseOverlaps(const Scene& scene, const World& world) {
+  // Particle ids are the order of addition: the explicit particles are ids 0 .. n-1.
+  const auto allows = [&](std::uint32_t id) { return id >= scene.particles.size() || scene.particles[id].allowOverlap; };
+  const auto name = [&](std::uint32_t id) { return id < scene.particles.size() ? scene.particles[id].origin : "an inserted particle"; };
+  bool check = false;
+  for (std::uint32_t i = 0; i < scene.particles.size(); ++i) check = check || !allows(i);
+  if (!check) return;
+  World probe = world;  // the world itself starts without history
+  probe.computeForces();
+  const std::vector<std::uint32_t>& id = probe.particles().id;  // slots may have been re-ordered
+  for (const Contact& c : probe.contacts()) {
+    if (c.geometry.overlap <= 0.0 || (allows(id[c.a]) && (c.onWall() || allows(id[c.b])))) continue;
+    const std::uint32_t first = c.onWall() ? id[c.a] : std::min(id[c.a], id[c.b]);
+    throw SceneError(scene.path + ": " + name(first) + " overlaps " +
+                     (c.onWall() ? "walls[" + std::to_string(c.b & ~wallFlag) + "]" : name(std::max(id[c.a], id[c.b]))) + " by " +
+                     shortNumber(c.geometry.overlap) + " m at the start; move it, or set allow_overlap: true on its entry");
+  }
+}
+
 }  // namespace
 
 World buildWorld(const Scene& scene) {
@@ -48,6 +69,19 @@ World buildWorld(const Scene& scene) {
   std::vector<Vec3> centres;
   std::vector<Quat> orientations;
   std::vector<double> radii;
+  for (const ParticleSpec& p : scene.particles) {  // explicit particles first
+    shapes.push_back(p.shape ? sampleShape(rng, scene.shapes[*p.shape])  // a fixed family: no draw
+                             : Superquadric(p.semiAxes.x(), p.semiAxes.y(), p.semiAxes.z(), p.n1, p.n2));
+    for (int d = 0; d < 3; ++d) {
+      if (!scene.domain.periodic[d] && (p.centre(d) < scene.domain.lo(d) || p.centre(d) > scene.domain.hi(d))) {
+        throw SceneError(scene.path + ": " + p.origin + ": the centre lies outside the domain along " + "xyz"[d]);
+      }
+    }
+    materialOf.push_back(p.material);
+    centres.push_back(scene.domain.wrap(p.centre));
+    orientations.push_back(p.orientation);
+    radii.push_back(shapes.back().boundingRadius());
+  }
   for (std::size_t k = 0; k < scene.insertions.size(); ++k) {
     const InsertionSpec& in = scene.insertions[k];
     std::uniform_real_distribution<double> ux(in.lo.x(), in.hi.x()), uy(in.lo.y(), in.hi.y()), uz(in.lo.z(), in.hi.z());
@@ -158,6 +192,11 @@ World buildWorld(const Scene& scene) {
   for (std::size_t i = 0; i < shapes.size(); ++i) {
     world.addParticle(static_cast<std::uint32_t>(i), materialOf[i], centres[i], orientations[i]);
   }
+  for (std::size_t i = 0; i < scene.particles.size(); ++i) {
+    world.particles().velocity[i] = scene.particles[i].velocity;
+    world.particles().setAngularVelocity(i, scene.particles[i].angularVelocity);
+  }
+  refuseOverlaps(scene, world);
   world.setTimeStep(scene.timeStep ? *scene.timeStep : automaticTimeStep(scene, world, scene.timeStepFraction));
   return world;
 }

@@ -42,6 +42,11 @@ std::uint64_t sceneFingerprint(const Scene& scene) {
     for (const auto& [key, value] : i.lawParameters) h.all(key, value);
   }
   for (const WallSpec& w : scene.walls) h.all(w.point, w.normal, w.velocity, h.n(w.material));
+  for (const ParticleSpec& p : scene.particles) {
+    const Quat& q = p.orientation;
+    h.all(p.origin, h.n(p.shape.value_or(~std::uint32_t{0})), p.semiAxes, p.n1, p.n2, h.n(p.material), p.centre, q.w(), q.x(),
+          q.y(), q.z(), p.velocity, p.angularVelocity, h.n(p.allowOverlap));
+  }
   for (const InsertionSpec& in : scene.insertions) {
     h.all(h.n(in.count), in.solidFraction, h.n(in.shape), h.n(in.material), in.lo, in.hi, h.n(in.randomOrientation));
   }

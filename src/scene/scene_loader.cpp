@@ -12,6 +12,7 @@
 
 #include "sqdem/geometry/superquadric.hpp"
 #include "sqdem/mechanics/law_input.hpp"
+#include "sqdem/scene/particle_file.hpp"
 #include "sqdem/scene/scene_loader.hpp"
 
 namespace sqdem {
@@ -195,6 +196,33 @@ class SceneLawInput final : public LawInput {
   std::vector<std::pair<std::string, double>>& record_;
 };
 
+/// An entry of `particles:`: a fixed-size shape family, a material and the initial state.
+ParticleSpec readParticle(const Reader& r, const YAML::Node& node, const std::string& where, const Scene& scene) {
+  r.allowOnly(node, where, {"shape", "material", "centre", "quaternion", "velocity", "angular_velocity", "allow_overlap"});
+  ParticleSpec p;
+  p.origin = where;
+  if (!node["shape"]) r.fail(node, where + ".shape", "missing");
+  if (!node["material"]) r.fail(node, where + ".material", "missing");
+  p.shape = r.lookup(node["shape"], where + ".shape", scene.shapes, "shape");
+  const ShapeFamily& f = scene.shapes[*p.shape];
+  if (f.volumeRadius[0] != f.volumeRadius[1] || f.aspectB[0] != f.aspectB[1] || f.aspectC[0] != f.aspectC[1]) {
+    r.fail(node["shape"], where + ".shape", "shape '" + f.name + "' is a distribution; an explicit particle needs a shape of fixed size (semi_axes)");
+  }
+  p.material = r.lookup(node["material"], where + ".material", scene.materials, "material");
+  p.centre = r.vector(node, "centre", where);
+  if (const YAML::Node q = node["quaternion"]) {
+    if (!q.IsSequence() || q.size() != 4) r.fail(q, where + ".quaternion", "must be [w, x, y, z]");
+    p.orientation = Quat(r.asNumber(q[0], where + ".quaternion"), r.asNumber(q[1], where + ".quaternion"),
+                         r.asNumber(q[2], where + ".quaternion"), r.asNumber(q[3], where + ".quaternion"));
+    if (std::abs(p.orientation.norm() - 1.0) > 1e-6) r.fail(q, where + ".quaternion", "must be a unit quaternion [w, x, y, z]");
+    p.orientation.normalize();
+  }
+  if (node["velocity"]) p.velocity = r.vector(node, "velocity", where);
+  if (node["angular_velocity"]) p.angularVelocity = r.vector(node, "angular_velocity", where);
+  p.allowOverlap = r.flag(node, "allow_overlap", where, false);
+  return p;
+}
+
 Material readMaterial(const Reader& r, const YAML::Node& m, const std::string& where) {
   r.allowOnly(m, where, {"youngs_modulus", "poisson_ratio", "density", "friction", "restitution", "yield_strength"});
   Material out;
@@ -243,7 +271,7 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
   Scene scene;
   scene.path = path;
   r.allowOnly(root, "", {"seed", "domain", "gravity", "time_step", "time_step_fraction", "impact_velocity", "steps_per_collision", "skin", "broad_phase", "reorder_every", "materials",
-                         "shapes", "interactions", "walls", "insert", "stages", "output"});
+                         "shapes", "interactions", "walls", "particles", "insert", "stages", "output"});
   scene.seed = static_cast<std::uint64_t>(r.integer(root, "seed", "", 0.0, 1e18, 1.0));
 
   const YAML::Node domain = root["domain"];
@@ -285,6 +313,8 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
   r.uniqueKeys(materials, "materials");
   for (const auto& m : materials) {
     const std::string name = m.first.as<std::string>();
+    static const std::regex plain("[A-Za-z0-9_.-]+");  // names go into particle files (CSV) and messages
+    if (!std::regex_match(name, plain)) r.fail(m.first, "materials." + name, "names are letters, digits, '_', '.', '-'");
     scene.materials.push_back({name, readMaterial(r, m.second, "materials." + name)});
   }
   const YAML::Node shapes = root["shapes"];
@@ -396,11 +426,36 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
     }
   }
 
+  // Explicit particles: the list, then the files of `insert`; random insertions avoid them.
+  if (const YAML::Node list = root["particles"]) {
+    if (!list.IsSequence() || list.size() == 0) r.fail(list, "particles", "must be a non-empty list of {shape, material, centre, ...}");
+    for (std::size_t k = 0; k < list.size(); ++k) scene.particles.push_back(readParticle(r, list[k], "particles[" + std::to_string(k) + "]", scene));
+  }
   const YAML::Node insert = root["insert"];
-  if (!insert || !insert.IsSequence() || insert.size() == 0) r.fail(insert ? insert : root, "insert", "missing (a list of {count, shape, material, region})");
-  for (std::size_t k = 0; k < insert.size(); ++k) {
+  if (insert && (!insert.IsSequence() || insert.size() == 0)) r.fail(insert, "insert", "must be a non-empty list");
+  if (!insert && scene.particles.empty()) r.fail(root, "insert", "missing: give particles by 'insert' (a list of {count, shape, material, region} or {file}) or 'particles'");
+  for (std::size_t k = 0; insert && k < insert.size(); ++k) {
     const std::string where = "insert[" + std::to_string(k) + "]";
     const YAML::Node in = insert[k];
+    if (in.IsMap() && in["file"]) {
+      r.allowOnly(in, where, {"file", "allow_overlap"});
+      const std::filesystem::path file = std::filesystem::path(path).parent_path() / r.text(in, "file", where);
+      if (!std::filesystem::is_regular_file(file)) {
+        r.fail(in["file"], where + ".file", "cannot open '" + file.string() + "' (paths are relative to the scene file)");
+      }
+      const bool allowOverlap = r.flag(in, "allow_overlap", where, false);
+      std::vector<ParticleSpec> particles;
+      try {
+        particles = readParticleFile(file, scene.materials);
+      } catch (const SceneError& e) {
+        r.fail(in["file"], where + ".file", e.what());
+      }
+      for (ParticleSpec& p : particles) {
+        p.allowOverlap = allowOverlap;
+        scene.particles.push_back(std::move(p));
+      }
+      continue;
+    }
     r.allowOnly(in, where, {"count", "solid_fraction", "shape", "material", "region", "random_orientation"});
     InsertionSpec spec;
     if (in["count"].IsDefined() == in["solid_fraction"].IsDefined()) {

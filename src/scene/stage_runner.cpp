@@ -6,6 +6,7 @@
 
 #include "sqdem/io/run_log.hpp"
 #include "sqdem/io/vtk_writer.hpp"
+#include "sqdem/scene/particle_file.hpp"
 #include "sqdem/scene/build_world.hpp"
 #include "sqdem/world/run_health.hpp"
 
@@ -150,6 +151,8 @@ RunReport runStages(const Scene& scene, World& world, const RunPlan& plan, const
     writeRunCheckpoint(output.directory / (output.name + "_after_" + stage.name + ".checkpoint"), scene,
                        RunProgress{stageIndex + 1, 0, world.time(), totalSteps}, world);
   }
+  report.finalParticles = output.directory / (output.name + "_final_particles.csv");
+  writeParticleFile(report.finalParticles, world, scene.materials);
   return report;
 }
 

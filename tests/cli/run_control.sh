@@ -9,6 +9,18 @@ a="$scratch/a"
 check "uninterrupted run" "$sqdem" run "$scene" --out "$a" > "$scratch/a.log"
 final=$(tail -1 "$a/small_bed.csv")
 
+# The final state as a particle file, and a scene that starts from it (a packed bed).
+check "final particle file: header and 120 rows" awk -F, 'NR == 1 { ok = ($1 == "material" && NF == 19) } END { exit !(ok && NR == 121) }' \
+  "$a/small_bed_final_particles.csv"
+mkdir -p "$scratch/restart"
+cp "$a/small_bed_final_particles.csv" "$scratch/restart/bed.csv"
+sed -e 's|^  - {count: 120.*|  - {file: bed.csv, allow_overlap: true}|' -e '/^stages:/,$d' "$scene" > "$scratch/restart/restart.yaml"
+printf 'stages:\n  - {name: relax, duration: 0.002}\noutput: {frames: 1}\n' >> "$scratch/restart/restart.yaml"
+check "a scene starts from the final particle file" "$sqdem" run "$scratch/restart/restart.yaml" --out "$scratch/restart/out" > /dev/null
+sed 's|allow_overlap: true|allow_overlap: false|' "$scratch/restart/restart.yaml" > "$scratch/restart/strict.yaml"
+expect_error "a packed bed without allow_overlap" 1 "bed.csv:[0-9]* overlaps .* set allow_overlap: true" \
+  "$sqdem" run "$scratch/restart/strict.yaml" --out "$scratch/restart/strict"
+
 # Mid-stage resume from the periodic checkpoint (every 5000 steps: the last one is in 'pour').
 check "resume from the periodic checkpoint" "$sqdem" run "$scene" --resume "$a/small_bed_latest.checkpoint" --out "$a" > /dev/null
 check "resumed final row equals the uninterrupted one (step column continues)" \

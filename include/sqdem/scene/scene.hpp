@@ -66,6 +66,21 @@ struct InsertionSpec {
   bool randomOrientation = true;
 };
 
+/// A particle placed explicitly: an entry of `particles:` or a row of a particle file
+/// (`insert: [{file: ...}]`, particle_file.hpp).
+struct ParticleSpec {
+  std::string origin;             ///< "particles[3]" or "bed.csv:12", for messages
+  std::optional<std::uint32_t> shape;  ///< a fixed-size shape family, or
+  Vec3 semiAxes = Vec3::Zero();   ///< the superquadric's semi-axes (m)
+  double n1 = 2.0, n2 = 2.0;      ///< and exponents
+  std::uint32_t material = 0;
+  Vec3 centre = Vec3::Zero();     ///< (m)
+  Quat orientation = Quat::Identity();  ///< body -> world
+  Vec3 velocity = Vec3::Zero();   ///< (m/s)
+  Vec3 angularVelocity = Vec3::Zero();  ///< world frame (rad/s)
+  bool allowOverlap = false;      ///< may start overlapping other particles or walls
+};
+
 struct StageSpec {
   std::string name;
   double duration = 0.0;            ///< simulated time limit (s)
@@ -107,7 +122,8 @@ struct Scene {
   std::vector<ShapeFamily> shapes;
   std::vector<InteractionSpec> interactions;
   std::vector<WallSpec> walls;
-  std::vector<InsertionSpec> insertions;
+  std::vector<ParticleSpec> particles;     ///< placed first (the list, then the files of `insert`)
+  std::vector<InsertionSpec> insertions;   ///< random insertions, avoiding every particle before them
   std::vector<StageSpec> stages;
   OutputSpec output;
 };

@@ -12,7 +12,8 @@
 // every 10 steps after `stop.after`); it writes VTK frames, CSV rows (io/run_log.hpp), the
 // checkpoint `<name>_after_<stage>.checkpoint` after each stage and `<name>_latest.checkpoint`
 // every output.checkpoint_every_steps steps / checkpoint_every_minutes minutes and when `stop`
-// becomes non-zero (then it returns Interrupted after the current step). Numerical trouble
+// becomes non-zero (then it returns Interrupted after the current step). A completed run ends
+// with the particle file of its final state, `<name>_final_particles.csv` (particle_file.hpp). Numerical trouble
 // (run_health.hpp) ends it with NumericalTrouble after the log row is written. A run resumed
 // mid-stage continues bit for bit.
 
@@ -61,6 +62,7 @@ struct RunReport {
   std::string trouble;                  ///< what went wrong (NumericalTrouble)
   long totalSteps = 0, stepsThisRun = 0;
   std::filesystem::path log, latestCheckpoint;
+  std::filesystem::path finalParticles;  ///< the particle file of the final state (Completed)
 };
 
 RunReport runStages(const Scene& scene, World& world, const RunPlan& plan, const RunProgress& start,
