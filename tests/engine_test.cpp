@@ -340,12 +340,12 @@ TEST(Engine, BeckerKamlahBedSettles) {
 // damping ratio is 001 Eq. 12's zeta(e) = -ln e / sqrt(pi^2 + ln^2 e).
 TEST(Engine, InteractionOverridesPairRestitutionAndFriction) {
   const World plain = buildWorld(loadScene(writeScene("plain", bedScene)));
-  EXPECT_DOUBLE_EQ(plain.contactModel(0, 0).friction, 0.4);
+  EXPECT_DOUBLE_EQ(plain.contactModel(0, 0).tangential.friction, 0.4);
   const World pair = buildWorld(loadScene(writeScene(
       "pair", replaced(bedScene, "  - materials: [glass, glass]\n", "  - materials: [glass, glass]\n    restitution: 0.8\n    friction: 0.1\n"))));
-  EXPECT_DOUBLE_EQ(pair.contactModel(0, 0).friction, 0.1);
+  EXPECT_DOUBLE_EQ(pair.contactModel(0, 0).tangential.friction, 0.1);
   const double l = std::log(0.8);
-  EXPECT_NEAR(pair.contactModel(0, 0).dampingRatio, -l / std::sqrt(std::numbers::pi * std::numbers::pi + l * l), 1e-15);
+  EXPECT_NEAR(pair.contactModel(0, 0).damping.ratio, -l / std::sqrt(std::numbers::pi * std::numbers::pi + l * l), 1e-15);
 }
 
 TEST(Engine, SceneErrorsNameLineKeyAndWhatIsAllowed) {

@@ -249,8 +249,7 @@ TEST(World, RollingResistanceHoldsBelowTheYieldForceAndRollsAbove) {
     World world({Superquadric::sphere(R)}, {Material{E, nu, rho, 1.0, 0.3}}, bigBox(), 1e-7);
     ContactModel law = world.defaultContactModel(0, 0);
     law.normal = HaervigJkrLaw{gamma, gamma};
-    law.realModulus = law.effectiveModulus;
-    law.rollingHysteresis = hysteresis;
+    law.rolling = HaervigRollingResistance{hysteresis, law.effectiveModulus};
     world.setContactModel(0, 0, law);
     world.addWall(Wall{.plane = Plane{Vec3::Zero(), Vec3::UnitZ()}});
     world.addParticle(0, 0, Vec3(0.0, 0.0, R - 1e-9), Quat::Identity());

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "sqdem/mechanics/damping.hpp"
+#include "sqdem/mechanics/tangent_plane.hpp"
 
 namespace sqdem {
 
@@ -76,6 +77,25 @@ NormalResponse HaervigJkrLaw::force(const NormalContact& c, double overlap, Hist
           .area = std::numbers::pi * c.radii.Rc * c.factors.beta * overlap,
           .pullOff = jkr.criticalForce(),
           .regime = "attached"};
+}
+
+Vec3 HaervigRollingResistance::moment(const HaervigJkrLaw& law, const NormalContact& c, double overlap, const Vec3& n,
+                                      const Vec3& vt, double radiusA, double radiusB, const Vec3& omegaA,
+                                      const Vec3& omegaB, Vec3& xi, double dt) const {
+  const HaervigJkr modified = law.at(c);
+  const double R = c.factors.gamma * c.factors.gamma * c.radii.Rc;  // the Hertz-equivalent sphere
+  const HaervigJkr real(realModulus, law.realSurfaceEnergy, R);
+  const HaervigRolling rolling{real.criticalForce(), real.equilibriumContactRadius() / 12.0 * hysteresis};
+  // Eq. 20; the radius ratio term tends to -1/2 for a wall (r_B -> infinity).
+  const double ratio = radiusB > 0.0 ? (radiusA - radiusB) / (radiusA + radiusB) : -1.0;
+  const Vec3 slidingAB = -vt;  // A relative to B at the contact
+  const Vec3 vL = R * (omegaA - omegaB).cross(n) + 0.5 * ratio * slidingAB;
+  keepInTangentPlane(xi, n);
+  xi += vL * dt;
+  double length = xi.norm();
+  const double magnitude = rolling.torque(length, modified.contactRadius(overlap) / modified.equilibriumContactRadius());
+  if (length < xi.norm()) xi *= length / xi.norm();  // Eq. 22: truncated at xi_crit
+  return xi.norm() > 0.0 ? Vec3(magnitude * n.cross(xi.normalized())) : Vec3::Zero();
 }
 
 }  // namespace sqdem

@@ -161,15 +161,15 @@ World buildWorld(const Scene& scene) {
     ContactModel model = world.defaultContactModel(in.materialA, in.materialB);
     model.normal = in.normal;
     model.curvatures = in.curvatures;
-    model.tangential = in.tangential;
+    model.tangential.elliptic = in.ellipticTangential;
     model.eccentricity = in.eccentricity;
     model.capFactor = in.capFactor;
-    if (in.restitution > 0.0) model.dampingRatio = restitutionDampingRatio(in.restitution);  // 0 for e = 1
-    if (in.friction >= 0.0) model.friction = in.friction;
-    model.realModulus = model.effectiveModulus;  // F_C, xi_crit of rolling use the real material
+    if (in.restitution > 0.0) model.damping.ratio = restitutionDampingRatio(in.restitution);  // 0 for e = 1
+    if (in.friction >= 0.0) model.tangential.friction = in.friction;
+    // F_C and xi_crit of the rolling resistance use the real material.
+    if (in.rollingHysteresis > 0.0) model.rolling = HaervigRollingResistance{in.rollingHysteresis, model.effectiveModulus};
     model.effectiveModulus *= in.stiffnessScale;
-    model.effectiveShear *= in.stiffnessScale;
-    model.rollingHysteresis = in.rollingHysteresis;
+    model.tangential.effectiveShear *= in.stiffnessScale;
     const std::string where = scene.path + ": interactions[" + std::to_string(&in - scene.interactions.data()) + "]";
     try {
       world.setContactModel(in.materialA, in.materialB, model);

@@ -37,7 +37,7 @@ std::uint64_t sceneFingerprint(const Scene& scene) {
     h.all(s.name, s.volumeRadius[0], s.volumeRadius[1], s.aspectB[0], s.aspectB[1], s.aspectC[0], s.aspectC[1], s.n1, s.n2);
   }
   for (const InteractionSpec& i : scene.interactions) {
-    h.all(h.n(i.materialA), h.n(i.materialB), i.normalName, h.n(i.curvatures), h.n(i.tangential), h.n(i.eccentricity), i.capFactor,
+    h.all(h.n(i.materialA), h.n(i.materialB), i.normalName, h.n(i.curvatures), h.n(i.ellipticTangential), h.n(i.eccentricity), i.capFactor,
           i.restitution, i.friction, i.stiffnessScale, i.rollingHysteresis);
     for (const auto& [key, value] : i.lawParameters) h.all(key, value);
   }

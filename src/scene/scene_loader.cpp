@@ -376,10 +376,9 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
     spec.normal = readNormalLaw(entry, lawInput, elasticity);
     spec.curvatures = entry.curvatures;
     // The elliptic tangential law needs the contact ellipse, which only the curvature laws have.
-    spec.tangential = r.choice(in, "tangential", where,
-                               {{"elliptic_mindlin", TangentialLaw::EllipticMindlin}, {"circular_mindlin", TangentialLaw::CircularMindlin}},
-                               entry.curvatures ? TangentialLaw::EllipticMindlin : TangentialLaw::CircularMindlin);
-    if (!entry.curvatures && spec.tangential == TangentialLaw::EllipticMindlin) {
+    spec.ellipticTangential = r.choice(in, "tangential", where, {{"elliptic_mindlin", true}, {"circular_mindlin", false}},
+                                       entry.curvatures);
+    if (!entry.curvatures && spec.ellipticTangential) {
       r.fail(in["tangential"], where + ".tangential", "elliptic_mindlin needs a law on the curvatures (allowed here: circular_mindlin)");
     }
     spec.eccentricity = r.choice(in, "eccentricity", where,

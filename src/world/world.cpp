@@ -40,11 +40,11 @@ ContactModel World::defaultContactModel(std::uint32_t ma, std::uint32_t mb) cons
   const Material &A = materials_.at(ma), &B = materials_.at(mb);
   ContactModel m;
   m.effectiveModulus = effectiveModulus(A.youngsModulus, A.poissonRatio, B.youngsModulus, B.poissonRatio);
-  m.effectiveShear = effectiveShearModulus(A.youngsModulus, A.poissonRatio, B.youngsModulus, B.poissonRatio);
-  m.poissonRatio = 0.5 * (A.poissonRatio + B.poissonRatio);
-  m.friction = std::min(A.friction, B.friction);
+  m.tangential.effectiveShear = effectiveShearModulus(A.youngsModulus, A.poissonRatio, B.youngsModulus, B.poissonRatio);
+  m.tangential.poissonRatio = 0.5 * (A.poissonRatio + B.poissonRatio);
+  m.tangential.friction = std::min(A.friction, B.friction);
   const double e = std::min(A.restitution, B.restitution);
-  m.dampingRatio = restitutionDampingRatio(e);  // 0 for e = 1
+  m.damping.ratio = restitutionDampingRatio(e);  // 0 for e = 1
   return m;
 }
 
@@ -54,6 +54,7 @@ void World::setContactModel(std::uint32_t ma, std::uint32_t mb, const ContactMod
   for (const Superquadric& s : shapes_) largest = std::max(largest, s.volumeEquivalentRadius());
   ContactModel m = model;
   m.reach = normalReach(m.normal, m.effectiveModulus, m.capFactor * largest);
+  m.tangential.elliptic = m.tangential.elliptic && m.curvatures;  // the ellipse needs the curvatures
   models_.at(ma * n + mb) = models_.at(mb * n + ma) = m;
   modelSet_[ma * n + mb] = modelSet_[mb * n + ma] = true;
 }

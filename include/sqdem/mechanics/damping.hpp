@@ -21,7 +21,18 @@
 //       D = 3/(4 E*); B (m s) is taken as a parameter because the printed expression for B
 //       (with q0) is garbled in the seed.
 
+#include <cmath>
+
 namespace sqdem {
+
+/// The engine's damping component (001 Eqs. 11, 13, 16): a force 2 sqrt(5/6) zeta sqrt(m* k)
+/// times the rate, normal or per tangential axis, with k the stiffness the law reports there.
+struct ViscousDamping {
+  double ratio = 0.0;  ///< zeta (-), restitutionDampingRatio(e); 0 for e = 1
+  double scale() const { return 2.0 * std::sqrt(5.0 / 6.0) * ratio; }
+  /// The coefficient (N s/m) for mass m* (kg) and stiffness k (N/m).
+  double coefficient(double mass, double stiffness) const { return scale() * std::sqrt(mass * stiffness); }
+};
 
 /// zeta(e) for a coefficient of restitution e in (0, 1] (000 Eq. 26 with beta = 1).
 double restitutionDampingRatio(double restitution);

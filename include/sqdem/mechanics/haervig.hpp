@@ -83,4 +83,22 @@ struct HaervigJkrLaw {
   double reach(double, double) const { return 0.0; }
 };
 
+/// rolling_hysteresis, the engine's rolling component with normal: haervig_jkr (Eqs. 18-22):
+/// rolling displacement xi integrated from
+///   v_L = R (w_A - w_B) x n + 1/2 (r_A - r_B)/(r_A + r_B) v_S                          (Eq. 20)
+/// (n from A to B, v_S the sliding velocity of A relative to B, R = gamma^2 Rc the
+/// Hertz-equivalent radius, r_k volume radii, r_B -> infinity for a wall), kept in the tangent
+/// plane, truncated at |xi| <= xi_crit = a_0/12 (dgamma/gamma) (Eqs. 18, 22); moment on A
+/// -k_r n x xi, k_r = 4 F_C (a/a_0)^3/2 (Eq. 21). F_C and xi_crit use the real E* and gamma,
+/// a/a_0 the law's (modified) contact (Section 3.2). History: xi (m).
+struct HaervigRollingResistance {
+  double hysteresis = 0.0;   ///< dgamma/gamma (-), Eq. 18
+  double realModulus = 0.0;  ///< E* of the unreduced material (Pa)
+
+  /// Moment on B (N m) at this overlap (m); vt the tangential velocity of B relative to A
+  /// (m/s), radii r_A, r_B (m; r_B = 0 for a wall), angular velocities (rad/s). Updates xi.
+  Vec3 moment(const HaervigJkrLaw& law, const NormalContact& c, double overlap, const Vec3& n, const Vec3& vt,
+              double radiusA, double radiusB, const Vec3& omegaA, const Vec3& omegaB, Vec3& xi, double dt) const;
+};
+
 }  // namespace sqdem

@@ -44,7 +44,7 @@ struct InteractionSpec {
   NormalLaw normal = HertzLaw{};
   bool curvatures = true;       ///< the normal law works on the detector's curvatures
   std::vector<std::pair<std::string, double>> lawParameters;  ///< every key the law read, with its value
-  TangentialLaw tangential = TangentialLaw::EllipticMindlin;
+  bool ellipticTangential = true;  ///< tangential: elliptic_mindlin (else circular_mindlin)
   EccentricityMethod eccentricity = EccentricityMethod::Tabulated;
   double capFactor = 10.0;
   double restitution = 0.0;     ///< pair restitution e (0: min of the materials'), sets the damping

@@ -8,27 +8,12 @@
 //                   elliptic Hertz factors (004 Eqs. 3-14; relative radii capped at cap R_vol_ref),
 //                   or on the volume-equivalent spheres (gamma = sqrt 2, beta = 2, Rc = R*/2):
 //                   rate-independent force, area, stiffness S_n, its own history
-//   damping         001 Eqs. 11-13: 2 sqrt(5/6) zeta sqrt(m* S_n) d(delta)/dt with the law's S_n
-//                   (the elliptic Hertz dF/d(delta) for the Hertz-type laws), zeta from the
-//                   restitution e
-//   tangential      incremental spring xi kept in the tangent plane (rotated with the contact),
-//                   F_t = -K_t xi - damping, Coulomb cap |F_t| <= mu F_n, or mu |F_n + 2 F_C| for
-//                   an adhesive law with pull-off F_C (001 Eq. 17)
-//     elliptic Mindlin  K_t = 8 G* a_c (u u^T / Phi(0) + v v^T / Phi(pi/2)): Mindlin's no-slip
-//                   stiffness of the contact ellipse (004 Eqs. 56-57, a_c semi-major axis from
-//                   the law's area and e^2, u its direction, v the minor one); a force along theta
-//                   from u then meets the stiffness 8 G* a_c / Phi(theta) of Eq. 56 exactly
-//     circular Mindlin  K_t = 8 G* a I, a = sqrt(A/pi) (the area-equivalent circle, Phi = 1)
-//                   damping per axis 2 sqrt(5/6) zeta sqrt(m* k_axis) (the partial-slip softening
-//                   of 004 Eqs. 59-67 is not applied: the spring is linear up to the Coulomb limit)
-//   rolling         Dominik-Tielens/Krijt rolling resistance as in Haervig (001 Eqs. 18-22), with
-//   (haervig_jkr)   normal: haervig_jkr: rolling displacement xi integrated from
-//                   v_L = R (w_A - w_B) x n + 1/2 (r_A - r_B)/(r_A + r_B) v_S (Eq. 20; n from A
-//                   to B, v_S the sliding velocity of A relative to B, R the Hertz-equivalent
-//                   radius, r_k volume radii, r_B -> inf for a wall), kept in the tangent plane,
-//                   truncated at |xi| <= xi_crit = a_0/12 (dgamma/gamma) (Eqs. 18, 22); moment on
-//                   A -k_r n x xi, k_r = 4 F_C (a/a_0)^3/2 (Eq. 21). With reduced stiffness F_C and
-//                   xi_crit use the real E* and gamma, a/a_0 the modified contact (001 Section 3.2)
+//   damping         ViscousDamping (damping.hpp, 001 Eqs. 11-13): 2 sqrt(5/6) zeta sqrt(m* S_n)
+//                   d(delta)/dt with the law's S_n, zeta from the restitution e
+//   tangential      MindlinSpring (mindlin_spring.hpp): elliptic or circular Mindlin no-slip
+//                   stiffness (004 Eqs. 56-57) with the Coulomb cap mu F_n, or mu |F_n + 2 F_C|
+//                   for an adhesive law with pull-off F_C (001 Eq. 17)
+//   rolling         HaervigRollingResistance (haervig.hpp, 001 Eqs. 18-22), with haervig_jkr
 //   total normal force  not clamped: near the end of a damped contact it turns slightly tensile,
 //                   which the restitution relation zeta(e) of 001 Eq. 12 assumes (clamping it
 //                   would raise the effective e, 0.30 -> 0.40).
@@ -39,26 +24,21 @@
 #include "sqdem/contact/contact_geometry.hpp"
 #include "sqdem/mechanics/elliptic.hpp"
 #include "sqdem/mechanics/law_registry.hpp"
+#include "sqdem/mechanics/mindlin_spring.hpp"
+
+#include <optional>
 
 namespace sqdem {
-
-enum class TangentialLaw { EllipticMindlin, CircularMindlin };
 
 struct ContactModel {
   NormalLaw normal = HertzLaw{};
   bool curvatures = true;          ///< the normal law works on the detector's curvatures
-  /// Elliptic needs the ellipse of a curvature law; with volume spheres it is the circle.
-  TangentialLaw tangential = TangentialLaw::EllipticMindlin;
   EccentricityMethod eccentricity = EccentricityMethod::Tabulated;
   double capFactor = 10.0;         ///< relative radii capped at capFactor R_vol_ref
   double effectiveModulus = 0.0;   ///< E* (Pa), after any reduced stiffness
-  double effectiveShear = 0.0;     ///< G* = ((2 - nuA)/GA + (2 - nuB)/GB)^-1 (Pa)
-  double poissonRatio = 0.0;       ///< nu of Eq. 57: the mean of the two materials' (-)
-  double friction = 0.0;           ///< mu (-)
-  double dampingRatio = 0.0;       ///< zeta(e) (-), 0 for e = 1
-  // Rolling resistance (normal: haervig_jkr only): 0 = off.
-  double rollingHysteresis = 0.0;  ///< dgamma/gamma (-), Eq. 18
-  double realModulus = 0.0;        ///< E* of the unreduced material (Pa), for F_C and xi_crit
+  ViscousDamping damping;          ///< normal and tangential
+  MindlinSpring tangential;        ///< friction 0: none; on the circle without curvatures
+  std::optional<HaervigRollingResistance> rolling;  ///< with normal: haervig_jkr only
   /// Bound of the normal law's range (m): the largest gap any of its contacts acts across
   /// (World::setContactModel sets it from the particle sizes).
   double reach = 0.0;

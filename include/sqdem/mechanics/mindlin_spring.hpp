@@ -1,0 +1,33 @@
+#pragma once
+// tangential: elliptic_mindlin / circular_mindlin, the engine's tangential component: an
+// incremental spring xi kept in the tangent plane (tangent_plane.hpp), F_t = -K_t xi - damping,
+// Coulomb cap |F_t| <= limit (mu F_n, or mu |F_n + 2 F_C| with adhesion: the caller's).
+//   elliptic   K_t = 8 G* a_c (u u^T / Phi(0) + v v^T / Phi(pi/2)): Mindlin's no-slip stiffness
+//              of the contact ellipse (004 Eqs. 56-57, a_c its semi-major axis from the area and
+//              e^2, u its direction from both surfaces' curvatures, v the minor one); a force
+//              along theta from u meets the stiffness 8 G* a_c / Phi(theta) of Eq. 56 exactly
+//   circular   K_t = 8 G* a I, a = sqrt(A/pi) (the area-equivalent circle, Phi = 1)
+// Damping per axis: ViscousDamping with k_u, k_v. The partial-slip softening of 004 Eqs. 59-67
+// is not applied: the spring is linear up to the Coulomb limit. History: the spring (m).
+
+#include "sqdem/geometry/curvature.hpp"
+#include "sqdem/mechanics/damping.hpp"
+#include "sqdem/mechanics/normal_law.hpp"
+
+namespace sqdem {
+
+struct MindlinSpring {
+  bool elliptic = true;         ///< on the contact ellipse (needs curvatures), else the circle
+  double effectiveShear = 0.0;  ///< G* = ((2 - nuA)/GA + (2 - nuB)/GB)^-1 (Pa)
+  double poissonRatio = 0.0;    ///< nu of Eq. 57, the mean of the two materials' (-)
+  double friction = 0.0;        ///< mu (-); 0: no tangential force
+
+  /// Force on B at a contact of area A (m^2) with the normal n (A to B) and the surfaces'
+  /// curvatures; vt the tangential velocity of B relative to A (m/s), mass m* (kg), step dt (s).
+  /// Updates the spring.
+  Vec3 force(const NormalContact& c, const PrincipalCurvatures& curvatureA, const PrincipalCurvatures& curvatureB,
+             const Vec3& n, double area, const Vec3& vt, double limit, const ViscousDamping& damping, double mass,
+             Vec3& spring, double dt) const;
+};
+
+}  // namespace sqdem

@@ -1,0 +1,41 @@
+#include "sqdem/mechanics/mindlin_spring.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "sqdem/mechanics/mindlin_deresiewicz.hpp"
+#include "sqdem/mechanics/tangent_plane.hpp"
+
+namespace sqdem {
+
+Vec3 MindlinSpring::force(const NormalContact& c, const PrincipalCurvatures& curvatureA,
+                          const PrincipalCurvatures& curvatureB, const Vec3& n, double area, const Vec3& vt,
+                          double limit, const ViscousDamping& damping, double mass, Vec3& spring, double dt) const {
+  keepInTangentPlane(spring, n);
+  spring += vt * dt;
+  // Stiffness along the contact ellipse's major axis u and minor axis v (circle: k_u = k_v).
+  Vec3 u;
+  double ku, kv;
+  if (elliptic) {
+    u = contactMajorAxis(curvatureA, curvatureB, n);
+    const double scale = 8.0 * effectiveShear * contactSemiMajorAxis(area, c.factors.e2);
+    const MindlinPhi phi = mindlinPhi(c.factors.K, c.factors.D, poissonRatio);
+    ku = scale / phi.major;
+    kv = scale / phi.minor;
+  } else {
+    u = n.unitOrthogonal();
+    ku = kv = 8.0 * effectiveShear * std::sqrt(area / std::numbers::pi);
+  }
+  const Vec3 v = n.cross(u);
+  const double etaU = damping.coefficient(mass, ku), etaV = damping.coefficient(mass, kv);
+  const double vu = vt.dot(u), vv = vt.dot(v);
+  Vec3 Ft = -(ku * spring.dot(u) + etaU * vu) * u - (kv * spring.dot(v) + etaV * vv) * v;
+  if (Ft.norm() > limit) {
+    // Slip: the spring shrinks to what carries the Coulomb force.
+    Ft *= limit / Ft.norm();
+    spring = ku > 0.0 && kv > 0.0 ? Vec3(-(Ft.dot(u) + etaU * vu) / ku * u - (Ft.dot(v) + etaV * vv) / kv * v) : Vec3::Zero();
+  }
+  return Ft;
+}
+
+}  // namespace sqdem
