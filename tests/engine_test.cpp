@@ -382,7 +382,12 @@ TEST(Engine, SceneErrorsNameLineKeyAndWhatIsAllowed) {
   expectSceneError(withInteraction("    normal: elliptic_jkr\n    roughness: {sigma: 1.0e-6, asperity_count: 10}\n    surface_energy: 0.1\n"),
                    "'interactions[0].roughness': unknown key (allowed: materials, normal, tangential, eccentricity, cap_factor, "
                    "reduced_stiffness, restitution, rolling_hysteresis, friction, and for elliptic_jkr: surface_energy); "
-                   "'roughness' is a key of normal: elliptic_hertz, volume_sphere_hertz");
+                   "'roughness' is a key of normal: elliptic_hertz, volume_sphere_hertz (Greenwood-Williamson roughness is "
+                   "built on the elliptic Hertz factors only");
+  expectSceneError(withInteraction("    normal: becker_kamlah\n    yield_strength: 1.0e6\n    surface_energy: 0.1\n"),
+                   "'surface_energy' is a key of normal: haervig_jkr, elliptic_jkr, nan_adhesive (adhesion is its own normal "
+                   "law (haervig_jkr, elliptic_jkr, nan_adhesive); an adhesive form of becker_kamlah or jamari (Thornton-Ning "
+                   "style) is not built yet)");
   expectSceneError(withInteraction("    normal: elliptic_hertz\n    rolling_hysteresis: 0.5\n"),
                    "'interactions[0].rolling_hysteresis': needs normal: haervig_jkr");
   expectSceneError(withInteraction("    normal: elliptic_jkr\n    surface_energy: -0.1\n"),
