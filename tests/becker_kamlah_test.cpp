@@ -124,5 +124,77 @@ TEST(BeckerKamlahValidation, ReportsPaperQuotedParameters) {
   EXPECT_GT(p4.epsilonMax, 1.0);
 }
 
+// Becker-Kamlah with surface_energy (becker_kamlah.hpp: JKR on the law's elastic contact,
+// Thornton-Ning style), on an ellipsoid pair's tip contact (Ri/Rj = 0.4) loaded to 20 delta_Y,
+// unloaded and pulled apart:
+//  - as W -> 0 it is Becker-Kamlah (W = 1e-12 J/m^2: within 1e-5 of the largest force);
+//  - the force is continuous along the whole path, at first yield and at the turning point;
+//  - the most tensile force on retraction is the JKR pull-off 3/2 pi W R of the flattened
+//    contact's Hertz sphere R = R_e,pmax f2^-3, larger than the undeformed contact's;
+//  - a contact loaded below yield pulls off at 3/2 pi W R_e f2^-3 (classical JKR).
+TEST(BeckerKamlahAdhesive, ThorntonNingStyleJkrOnTheElasticContact) {
+  const double E = 1e9, Y = 1e7, gamma = 0.05;
+  RelativeRadii r;
+  r.Ri = 4e-6;
+  r.Rj = 1e-5;
+  r.Rc = r.Ri * r.Rj / (r.Ri + r.Rj);
+  const NormalContact contact{.radii = r, .factors = hertzFactors(r.ratio(), EccentricityMethod::Exact), .effectiveModulus = E};
+  const BeckerKamlahParameters p{.yieldStrength = Y, .lambdaMax = 3.0, .epsilonMax = 10.0};
+  const BeckerFactors g = beckerFactors(r);
+  const BeckerKamlah plain(g, BeckerKamlahLaw{p}.at(contact, g));
+  const double top = 20.0 * plain.yieldOverlap(), detach = 0.05 * top;
+  std::vector<double> path;
+  for (int k = 0; k <= 2000; ++k) path.push_back(-detach + (top + detach) * k / 2000.0);
+  for (int k = 1; k <= 4000; ++k) path.push_back(top - (top + 2.0 * top) * k / 4000.0);
+  const auto run = [&](const BeckerKamlahLaw& law, std::vector<double>& forces) {
+    BeckerKamlahLaw::History h;
+    for (double d : path) {
+      const NormalResponse resp = law.force(contact, d, h);
+      forces.push_back(resp.acting ? resp.force : 0.0);
+    }
+  };
+  std::vector<double> reference, tiny, adhesive;
+  run(BeckerKamlahLaw{p}, reference);
+  run(BeckerKamlahLaw{p, 1e-12}, tiny);
+  run(BeckerKamlahLaw{p, gamma}, adhesive);
+  double largest = 0.0, worst = 0.0, tensile = 0.0;
+  for (std::size_t k = 0; k < path.size(); ++k) {
+    largest = std::max(largest, std::abs(reference[k]));
+    worst = std::max(worst, std::abs(tiny[k] - reference[k]));
+    tensile = std::min(tensile, adhesive[k]);
+  }
+  // Continuity at first yield (loading) and at the turning point (loading -> unloading).
+  const BeckerKamlahLaw law{p, gamma};
+  const auto forceAt = [&](std::initializer_list<double> history) {
+    BeckerKamlahLaw::History h;
+    double f = 0.0;
+    for (double d : history) f = law.force(contact, d, h).force;
+    return f;
+  };
+  const double dY = plain.yieldOverlap();
+  const double jump = std::max(std::abs(forceAt({0.0, dY * (1.0 - 1e-10)}) - forceAt({0.0, dY * (1.0 + 1e-10)})),
+                               std::abs(forceAt({0.0, top}) - forceAt({0.0, top, top * (1.0 - 1e-12)})));
+  const BeckerKamlahDent dent = plain.dentAfter(top);
+  const double flattened = 1.5 * std::numbers::pi * 2.0 * gamma * plain.hertzSphereRadius(dent.radius);
+  const double undeformed = 1.5 * std::numbers::pi * 2.0 * gamma * plain.hertzSphereRadius(g.Re);
+  std::printf("W -> 0: %.2g of the largest force; jump at yield or at the turning point %.2g of it; pull-off %.6e N "
+              "(JKR on the flattened contact %.6e N, undeformed %.6e N)\n",
+              worst / largest, jump / largest, -tensile, flattened, undeformed);
+  EXPECT_LT(worst, 1e-5 * largest);
+  EXPECT_LT(jump, 1e-8 * largest);
+  EXPECT_NEAR(-tensile, flattened, 1e-3 * flattened);
+  EXPECT_GT(flattened, undeformed);
+
+  BeckerKamlahLaw::History h;
+  law.force(contact, 0.0, h);  // touch, then load below yield and pull apart
+  const double below = 0.5 * dY;
+  double elasticPullOff = 0.0;
+  for (int k = 0; k <= 4000; ++k) {
+    const NormalResponse resp = law.force(contact, below - (below + detach) * k / 4000.0, h);
+    if (resp.acting) elasticPullOff = std::max(elasticPullOff, -resp.force);
+  }
+  EXPECT_NEAR(elasticPullOff, undeformed, 1e-3 * undeformed);
+}
+
 }  // namespace
 }  // namespace sqdem

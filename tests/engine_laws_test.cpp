@@ -79,6 +79,8 @@ std::vector<LawCase> laws() {
       {"elliptic_hertz", HertzLaw{}, {{"type", "elliptic_hertz"}}},
       {"becker_kamlah", BeckerKamlahLaw{bk},
        {{"type", "becker_kamlah"}, {"yield_strength", Y}, {"lambda_max", 3.0}, {"epsilon_max", 10.0}}},
+      {"becker_kamlah+jkr", BeckerKamlahLaw{bk, gamma},
+       {{"type", "becker_kamlah"}, {"yield_strength", Y}, {"lambda_max", 3.0}, {"epsilon_max", 10.0}, {"surface_energy", gamma}}},
       {"haervig_jkr", HaervigJkrLaw{gamma, gamma}, {{"type", "haervig_jkr"}, {"surface_energy", gamma}}},
       {"elliptic_jkr", EllipticJkrLaw{gamma}, {{"type", "elliptic_jkr"}, {"surface_energy", gamma}}},
       {"nan_adhesive", NanAdhesiveLaw{.surfaceEnergy = gamma, .yieldPressure = py},
@@ -124,7 +126,7 @@ TEST(EngineLaws, EachLawEqualsTheDriverOnTheSameHistory) {
         worst = std::max(worst, std::abs(s.force - d.force));
         largest = std::max(largest, std::abs(d.force));
       }
-      std::printf("%-10s %-14s largest force %.4e N, engine - driver %.2e of it, %d / %d samples in contact\n", body.name,
+      std::printf("%-10s %-17s largest force %.4e N, engine - driver %.2e of it, %d / %d samples in contact\n", body.name,
                   law.name, largest, worst / largest, engineContacts, driverContacts);
       EXPECT_LE(worst, 1e-9 * largest) << body.name << " " << law.name;
       EXPECT_EQ(engineContacts, driverContacts) << body.name << " " << law.name;

@@ -331,7 +331,7 @@ TEST(Engine, BeckerKamlahBedSettles) {
   EXPECT_EQ(world.statistics().detectorFailures, 0);
   ASSERT_GT(world.contacts().size(), 40u);
   std::size_t plastic = 0;
-  for (const Contact& c : world.contacts()) plastic += c.history.normal.load<BeckerKamlahHistory>().maxOverlap > c.geometry.overlap;
+  for (const Contact& c : world.contacts()) plastic += c.history.normal.load<BeckerKamlahLaw::History>().plastic.maxOverlap > c.geometry.overlap;
   EXPECT_GT(plastic, 0u);  // contacts remember a larger overlap than the current one
   for (std::size_t i = 0; i < world.particles().size(); ++i) ASSERT_TRUE(world.particles().position[i].allFinite());
 }
@@ -384,10 +384,9 @@ TEST(Engine, SceneErrorsNameLineKeyAndWhatIsAllowed) {
                    "reduced_stiffness, restitution, rolling_hysteresis, friction, and for elliptic_jkr: surface_energy); "
                    "'roughness' is a key of normal: elliptic_hertz, volume_sphere_hertz (Greenwood-Williamson roughness is "
                    "built on the elliptic Hertz factors only");
-  expectSceneError(withInteraction("    normal: becker_kamlah\n    yield_strength: 1.0e6\n    surface_energy: 0.1\n"),
-                   "'surface_energy' is a key of normal: haervig_jkr, elliptic_jkr, nan_adhesive (adhesion is its own normal "
-                   "law (haervig_jkr, elliptic_jkr, nan_adhesive); an adhesive form of becker_kamlah or jamari (Thornton-Ning "
-                   "style) is not built yet)");
+  expectSceneError(withInteraction("    normal: jamari\n    hardness: 1.0e6\n    surface_energy: 0.1\n"),
+                   "'surface_energy' is a key of normal: becker_kamlah, haervig_jkr, elliptic_jkr, nan_adhesive (adhesion goes "
+                   "with haervig_jkr, elliptic_jkr, nan_adhesive and becker_kamlah; an adhesive form of jamari is not built)");
   expectSceneError(withInteraction("    normal: elliptic_hertz\n    rolling_hysteresis: 0.5\n"),
                    "'interactions[0].rolling_hysteresis': needs normal: haervig_jkr");
   expectSceneError(withInteraction("    normal: elliptic_jkr\n    surface_energy: -0.1\n"),

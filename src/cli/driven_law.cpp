@@ -70,7 +70,7 @@ DrivenLaw::DrivenLaw(const json& law, const std::string& where, const RelativeRa
   if (!entry.curvatures) input.fail("type", "volume_sphere_hertz needs particles; on given radii it is elliptic_hertz");
   const PairElasticity pair{.effectiveModulus = materials.effectiveModulus(), .poissonRatio = materials.meanPoisson()};
   law_ = readNormalLaw(entry, input, pair);
-  adhesive_ = entry.adhesive;
+  adhesive_ = sqdem::adhesive(law_);
   contact_ = {.radii = radii, .factors = hertzFactors(radii.ratio(), m), .effectiveModulus = pair.effectiveModulus,
               .radiusSum = meanRadiusSum};
   if (const auto* bk = std::get_if<BeckerKamlahLaw>(&law_);

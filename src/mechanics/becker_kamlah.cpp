@@ -1,6 +1,7 @@
 #include "sqdem/mechanics/becker_kamlah.hpp"
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 
@@ -72,27 +73,33 @@ BeckerKamlahState BeckerKamlah::evaluate(double overlap, BeckerKamlahHistory& hi
                                      : PlasticRegime::FullyPlastic;
     return s;
   }
-  const double deltaStar = history.maxOverlap;
-  if (deltaStar <= deltaY_) {  // never yielded: Hertz both ways
+  if (history.maxOverlap <= deltaY_) {  // never yielded: Hertz both ways
     s.force = hertz(g_.Re, overlap);
     s.contactRadius = overlap > 0.0 ? std::sqrt(squaredContactRadius(overlap)) : 0.0;
     s.regime = overlap > 0.0 ? PlasticRegime::Unloading : PlasticRegime::Separated;
     return s;
   }
+  const BeckerKamlahDent dent = dentAfter(history.maxOverlap);
+  s.plasticOverlap = dent.plasticOverlap;
+  const double elastic = overlap - s.plasticOverlap;
+  if (elastic <= 0.0) return s;
+  s.force = hertz(dent.radius, elastic);                                                       // Eq. 49
+  s.contactRadius = std::sqrt(dent.radius * elastic * g_.f1 * g_.f1 / g_.f2);
+  s.regime = PlasticRegime::Unloading;
+  return s;
+}
+
+BeckerKamlahDent BeckerKamlah::dentAfter(double deltaStar) const {
+  if (deltaStar <= deltaY_) return {g_.Re, 0.0};
   const double fStarPY = pi * pY_ * (squaredContactRadius(deltaStar) - cY_ * cY_) + forceY_;  // Eq. 24
   const double ReP = 4.0 * p_.effectiveModulus / (3.0 * fStarPY) *
                      std::pow((fStarPY + 0.5 * forceY_) / (pi * pY_), 1.5) /
                      (g_.f1 * g_.f1 * g_.f1);                                                  // Eq. 44
   const double beta = loadingForce(deltaStar) / fStarPY;                                      // Eq. 46
-  const double RePMax = beta * beta * ReP;                                                     // Eq. 48
-  s.plasticOverlap = deltaStar * (1.0 - g_.Re / ReP);                                         // Eq. 34
-  const double elastic = overlap - s.plasticOverlap;
-  if (elastic <= 0.0) return s;
-  s.force = hertz(RePMax, elastic);                                                            // Eq. 49
-  s.contactRadius = std::sqrt(RePMax * elastic * g_.f1 * g_.f1 / g_.f2);
-  s.regime = PlasticRegime::Unloading;
-  return s;
+  return {beta * beta * ReP, deltaStar * (1.0 - g_.Re / ReP)};                                // Eqs. 48, 34
 }
+
+double BeckerKamlah::hertzSphereRadius(double Re) const { return Re / (g_.f2 * g_.f2 * g_.f2); }
 
 BeckerKamlahLaw BeckerKamlahLaw::read(const LawInput& in, const PairElasticity& pair) {
   if (pair.stiffnessScale != 1.0) in.fail("", "becker_kamlah takes no reduced_stiffness (no published rule for plastic contacts)");
@@ -112,7 +119,7 @@ BeckerKamlahLaw BeckerKamlahLaw::read(const LawInput& in, const PairElasticity& 
     p.epsilonMax = 0.0;  // 0: the fits, per contact
   }
   p.exponent = in.positive("exponent", "-, n of 002 Eq. 28", p.exponent);
-  return {p};
+  return {p, in.positive("surface_energy", "J/m^2, gamma; W = 2 gamma", 0.0)};
 }
 
 BeckerKamlahParameters BeckerKamlahLaw::at(const NormalContact& c, const BeckerFactors& geometry) const {
@@ -127,13 +134,41 @@ BeckerKamlahParameters BeckerKamlahLaw::at(const NormalContact& c, const BeckerF
 }
 
 NormalResponse BeckerKamlahLaw::force(const NormalContact& c, double overlap, History& h) const {
-  if (!(overlap > 0.0)) return {.acting = false};
+  if (surfaceEnergy == 0.0 && !(overlap > 0.0)) return {.acting = false};
   const BeckerFactors geometry = beckerFactors(c.radii);
-  const BeckerKamlahState s = BeckerKamlah(geometry, at(c, geometry)).evaluate(overlap, h);
+  const BeckerKamlah law(geometry, at(c, geometry));
+  if (surfaceEnergy > 0.0) return adhesive(law, c, overlap, h);
+  const BeckerKamlahState s = law.evaluate(overlap, h.plastic);
   return {.force = s.force,
           .stiffness = 2.0 * c.effectiveModulus * c.factors.gamma * std::sqrt(c.radii.Rc) * std::sqrt(overlap),
-          .area = std::numbers::pi * s.contactRadius * s.contactRadius,
+          .area = pi * s.contactRadius * s.contactRadius,
           .regime = describe(s.regime)};
+}
+
+NormalResponse BeckerKamlahLaw::adhesive(const BeckerKamlah& law, const NormalContact& c, double overlap, History& h) const {
+  if (!h.attached && overlap < 0.0) return {.acting = false};
+  const BeckerKamlahState s = law.evaluate(overlap, h.plastic);  // the plastic state
+  const BeckerKamlahDent dent = law.dentAfter(h.plastic.maxOverlap);
+  const CircularJkr jkr{c.effectiveModulus, 2.0 * surfaceEnergy, law.hertzSphereRadius(dent.radius)};
+  const double elastic = overlap - dent.plasticOverlap;
+  h.attached = h.attached ? elastic >= jkr.overlapAt(jkr.minimumContactRadius()) : elastic >= 0.0;
+  if (!h.attached) return {.acting = false};
+  const double a = jkr.contactRadius(elastic);
+  return {.force = jkr.forceAt(a),
+          .stiffness = 2.0 * c.effectiveModulus * a,
+          .area = pi * a * a,
+          .pullOff = jkr.pullOffForce(),
+          .regime = elastic >= 0.0 ? describe(s.regime) : "attached"};
+}
+
+double BeckerKamlahLaw::range(const History& h) const {
+  return h.attached ? std::numeric_limits<double>::infinity() : 0.0;
+}
+
+double BeckerKamlahLaw::reach(double effectiveModulus, double R) const {
+  if (surfaceEnergy == 0.0) return 0.0;
+  const CircularJkr jkr{effectiveModulus, 2.0 * surfaceEnergy, R};
+  return -4.0 * jkr.overlapAt(jkr.minimumContactRadius());
 }
 
 }  // namespace sqdem

@@ -33,13 +33,13 @@ NormalLaw readAs(const LawInput& in, const PairElasticity& pair) {
 }
 
 constexpr std::array entries{
-    NormalLawEntry{"elliptic_hertz", true, false, hertzKeys, readHertz},
-    NormalLawEntry{"volume_sphere_hertz", false, false, hertzKeys, readHertz},
-    NormalLawEntry{"becker_kamlah", true, false, BeckerKamlahLaw::keys, readAs<BeckerKamlahLaw>},
-    NormalLawEntry{"haervig_jkr", true, true, HaervigJkrLaw::keys, readAs<HaervigJkrLaw>},
-    NormalLawEntry{"elliptic_jkr", true, true, EllipticJkrLaw::keys, readAs<EllipticJkrLaw>},
-    NormalLawEntry{"nan_adhesive", true, true, NanAdhesiveLaw::keys, readAs<NanAdhesiveLaw>},
-    NormalLawEntry{"jamari", true, false, JamariLaw::keys, readAs<JamariLaw>},
+    NormalLawEntry{"elliptic_hertz", true, hertzKeys, readHertz},
+    NormalLawEntry{"volume_sphere_hertz", false, hertzKeys, readHertz},
+    NormalLawEntry{"becker_kamlah", true, BeckerKamlahLaw::keys, readAs<BeckerKamlahLaw>},
+    NormalLawEntry{"haervig_jkr", true, HaervigJkrLaw::keys, readAs<HaervigJkrLaw>},
+    NormalLawEntry{"elliptic_jkr", true, EllipticJkrLaw::keys, readAs<EllipticJkrLaw>},
+    NormalLawEntry{"nan_adhesive", true, NanAdhesiveLaw::keys, readAs<NanAdhesiveLaw>},
+    NormalLawEntry{"jamari", true, JamariLaw::keys, readAs<JamariLaw>},
 };
 
 /// Why a key of some laws is not combined with the others (appended to the message).
@@ -50,8 +50,8 @@ std::string_view combinationRefused(std::string_view key) {
            "and the seeds give no rough plastic law";
   }
   if (key == "surface_energy") {
-    return "adhesion is its own normal law (haervig_jkr, elliptic_jkr, nan_adhesive); an adhesive form of "
-           "becker_kamlah or jamari (Thornton-Ning style) is not built yet";
+    return "adhesion goes with haervig_jkr, elliptic_jkr, nan_adhesive and becker_kamlah; an adhesive form of jamari "
+           "is not built";
   }
   return {};
 }
@@ -72,6 +72,12 @@ void allowOnly(const LawInput& in, std::span<const std::string_view> allowed, st
 }
 
 }  // namespace
+
+bool adhesive(const NormalLaw& law) {
+  if (const auto* bk = std::get_if<BeckerKamlahLaw>(&law)) return bk->surfaceEnergy > 0.0;
+  return std::holds_alternative<HaervigJkrLaw>(law) || std::holds_alternative<EllipticJkrLaw>(law) ||
+         std::holds_alternative<NanAdhesiveLaw>(law);
+}
 
 NormalLaw readNormalLaw(const NormalLawEntry& entry, const LawInput& in, const PairElasticity& pair) {
   allowOnly(in, entry.keys, entry.name);

@@ -29,6 +29,7 @@
 // computed once per contact. Finite deformations (c/r > 0.16..0.4) are outside its validity.
 
 #include "sqdem/mechanics/elliptic.hpp"
+#include "sqdem/mechanics/jkr_circular.hpp"
 #include "sqdem/mechanics/law_input.hpp"
 #include "sqdem/mechanics/normal_law.hpp"
 
@@ -64,6 +65,13 @@ struct BeckerKamlahState {
   PlasticRegime regime = PlasticRegime::Separated;
 };
 
+/// The elastic contact Becker-Kamlah unloads on after loading to delta_*: effective radius
+/// R_e,pmax (Eq. 48; R_e before yield) and the plastic overlap delta_p (Eq. 34; 0 before yield).
+struct BeckerKamlahDent {
+  double radius = 0.0;          ///< (m)
+  double plasticOverlap = 0.0;  ///< (m)
+};
+
 class BeckerKamlah {
  public:
   BeckerKamlah(const BeckerFactors& geometry, const BeckerKamlahParameters& parameters);
@@ -77,6 +85,12 @@ class BeckerKamlah {
 
   /// Loading curve (monotonic, no history), Eqs. 10, 25-31.
   double loadingForce(double overlap) const;
+  /// The elastic contact after loading to delta_* (m); at delta = delta_* its Hertz force is the
+  /// loading force (Eqs. 46-49).
+  BeckerKamlahDent dentAfter(double deltaStar) const;
+  /// The radius of the sphere whose Hertz force equals Eq. 10 with effective radius Re:
+  /// Re f2^-3 (m).
+  double hertzSphereRadius(double Re) const;
 
  private:
   double squaredContactRadius(double overlap) const { return g_.Re * overlap * g_.f1 * g_.f1 / g_.f2; }
@@ -91,20 +105,43 @@ class BeckerKamlah {
 /// normal: becker_kamlah (normal_law.hpp component) on the detector's curvatures. Keys:
 /// yield_strength Y (Pa; default the weaker material's), plastic_transition (default true),
 /// lambda_max and epsilon_max (both or neither; neither: the NMC fits of Eq. 54 per contact with
-/// r_IJ = NormalContact::radiusSum), exponent n of Eq. 28 (default 1.8). Area pi c^2; S_n for the
-/// damping is the elliptic Hertz stiffness 2 E* gamma (Rc delta)^1/2. History: the largest overlap.
+/// r_IJ = NormalContact::radiusSum), exponent n of Eq. 28 (default 1.8), surface_energy gamma
+/// (J/m^2, W = 2 gamma; default 0: no adhesion). Area pi c^2; S_n for the damping is the
+/// elliptic Hertz stiffness 2 E* gamma (Rc delta)^1/2. History: the largest overlap.
+///
+/// With surface_energy: adhesion in the style of Thornton & Ning (Powder Technol. 99, 1998),
+/// who unload an adhesive elastic-plastic sphere along the JKR curve of its plastically flattened
+/// contact; the seeds give no adhesive law for ellipsoids. Becker-Kamlah defines at every state
+/// an elastic contact whose Hertz force is the law's force: the undeformed contact before yield,
+/// the flattened one (R_e,pmax, delta_p of Eqs. 34, 48; BeckerKamlahDent) after it, during
+/// plastic loading (at delta = delta_*: Eqs. 46-49) and unloading alike. The adhesive law is the
+/// JKR contact (jkr_circular.hpp) of the sphere with that Hertz force, R = R_e,pmax f2^-3, at the
+/// elastic overlap delta - delta_p: F = 4 E* a^3/(3R) - sqrt(8 pi W E* a^3), area pi a^2,
+/// S_n = 2 E* a. W -> 0 gives Becker-Kamlah's force back; before yield it is JKR. The contact
+/// forms when the elastic overlap reaches 0 (the surfaces touch: delta = 0, or delta_p in a dent)
+/// and detaches below JKR's displacement-controlled detachment overlap; while attached its range
+/// is unbounded. History then also: attached.
 struct BeckerKamlahLaw {
-  using History = BeckerKamlahHistory;
-  static constexpr std::array<std::string_view, 5> keys{"yield_strength", "plastic_transition", "lambda_max", "epsilon_max",
-                                                        "exponent"};
+  struct History {
+    BeckerKamlahHistory plastic;
+    bool attached = false;
+  };
+  static constexpr std::array<std::string_view, 6> keys{"yield_strength", "plastic_transition", "lambda_max", "epsilon_max",
+                                                        "exponent",       "surface_energy"};
   BeckerKamlahParameters parameters;  ///< effectiveModulus is taken from each contact
+  double surfaceEnergy = 0.0;         ///< gamma (J/m^2), 0: no adhesion
 
   static BeckerKamlahLaw read(const LawInput& in, const PairElasticity& pair);
   /// The parameters at this contact: E*, and l_max, e_max from the NMC fits when not given.
   BeckerKamlahParameters at(const NormalContact& c, const BeckerFactors& geometry) const;
   NormalResponse force(const NormalContact& c, double overlap, History& h) const;
-  double range(const History&) const { return 0.0; }
-  double reach(double, double) const { return 0.0; }
+  double range(const History& h) const;
+  /// With adhesion: 4 |delta_d| of the JKR contact of radius R, covering dents of radius up to
+  /// 64 R (delta_d ~ R^1/3); else 0.
+  double reach(double effectiveModulus, double R) const;
+
+ private:
+  NormalResponse adhesive(const BeckerKamlah& law, const NormalContact& c, double overlap, History& h) const;
 };
 
 }  // namespace sqdem

@@ -9,6 +9,7 @@
 //     + roughness {sigma, asperity_count}: GreenwoodWilliamsonLaw, 004 Eqs. 29-36  -
 //   volume_sphere_hertz  HertzLaw on the volume-equivalent spheres (no curvatures)  -
 //   becker_kamlah        BeckerKamlahLaw         002 Eqs. 1-54                    largest overlap
+//     + surface_energy: JKR on its elastic contact, Thornton-Ning style            + attached
 //   haervig_jkr          HaervigJkrLaw           001 Eqs. 7-10, 24                -
 //   elliptic_jkr         EllipticJkrLaw          004 Eqs. 19-28, 001 Eq. 24       attached
 //   nan_adhesive         NanAdhesiveLaw          000 Eqs. 1-67                    attached, alpha_max
@@ -35,7 +36,6 @@ using NormalLaw = std::variant<HertzLaw, GreenwoodWilliamsonLaw, BeckerKamlahLaw
 struct NormalLawEntry {
   std::string_view name;
   bool curvatures;  ///< uses the detector's curvatures (else the volume-equivalent spheres)
-  bool adhesive;    ///< acts across gaps while attached, pull-off force F_C
   std::span<const std::string_view> keys;  ///< the law's own keys
   NormalLaw (*read)(const LawInput& in, const PairElasticity& pair);
 };
@@ -46,6 +46,10 @@ const NormalLawEntry& normalLaw(std::string_view name, const LawInput& in, std::
 /// The law of `entry` from `in`: every key present must be the source's or the law's (a key of
 /// another law is named as such), then the law validates its values.
 NormalLaw readNormalLaw(const NormalLawEntry& entry, const LawInput& in, const PairElasticity& pair);
+
+/// Whether the law is adhesive (a pull-off force; Haervig JKR, elliptic JKR, Nan, Becker-Kamlah
+/// with surface_energy).
+bool adhesive(const NormalLaw& law);
 
 /// A law's response through its own history type, kept in a contact's NormalHistory slot.
 inline NormalResponse normalResponse(const NormalLaw& law, const NormalContact& c, double overlap, NormalHistory& slot) {
