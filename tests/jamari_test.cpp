@@ -10,15 +10,21 @@
 namespace sqdem {
 namespace {
 
+/// Relative radii Rj = 10 um and Ri = ratio Rj.
+RelativeRadii radiiOfRatio(double ratio) {
+  RelativeRadii r;
+  r.Rj = 1e-5;
+  r.Ri = ratio * r.Rj;
+  r.Rc = r.Ri * r.Rj / (r.Ri + r.Rj);
+  return r;
+}
+
 // Continuity at delta_1 and delta_2 (relative jump < 1e-9) and monotone loading, for a circular
 // and an elongated contact. Parameters: K_v = 0.454 + 0.41 nu (000 after Eq. 33), c_h = 1,
 // c_A = 220, i.e. delta_2/delta_1 = 110 for a circular contact (Eq. 44 gives c_A/2 there).
 TEST(Jamari, LoadingCurveIsContinuousAndMonotone) {
   for (double ratio : {1.0, 0.2}) {
-    RelativeRadii r;
-    r.Rj = 1e-5;
-    r.Ri = ratio * r.Rj;
-    r.Rc = r.Ri * r.Rj / (r.Ri + r.Rj);
+    const RelativeRadii r = radiiOfRatio(ratio);
     const HertzFactors h = hertzFactors(ratio, EccentricityMethod::Exact);
     const JamariElasticPlastic law(r, h, {1e11, 2e9, 0.454 + 0.41 * 0.3, 1.0, 220.0});
     for (double boundary : {law.yieldOverlap(), law.fullyPlasticOverlap()}) {
@@ -40,10 +46,7 @@ TEST(Jamari, LoadingCurveIsContinuousAndMonotone) {
 // F_m ((delta - delta_p)/delta_e)^3/2 with A proportional to delta - delta_p (004 Eqs. 1-2).
 TEST(Jamari, UnloadingIsTheElasticRecoveryOfTheLoadedContact) {
   const double ratio = 0.2;
-  RelativeRadii r;
-  r.Rj = 1e-5;
-  r.Ri = ratio * r.Rj;
-  r.Rc = r.Ri * r.Rj / (r.Ri + r.Rj);
+  const RelativeRadii r = radiiOfRatio(ratio);
   const HertzFactors h = hertzFactors(ratio, EccentricityMethod::Exact);
   const JamariElasticPlastic law(r, h, {1e11, 2e9, 0.454 + 0.41 * 0.3, 1.0, 220.0});
   const double elastic = 0.5 * law.yieldOverlap();

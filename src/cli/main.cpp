@@ -28,7 +28,7 @@ commands:
                          factors' results as one JSON object. See docs in README.md.
   sticking-velocity --radius R --density RHO --youngs-modulus E --poisson-ratio NU
                     --wall-youngs-modulus EW --wall-poisson-ratio NUW
-                    --surface-energy GAMMA --yield-pressure PY
+                    --work-of-adhesion W --yield-pressure PY
                          Critical velocities (m/s) of a sphere hitting a flat wall under Nan et
                          al.'s elasto-plastic adhesive law (seed 000, Eqs. 73-79; SI units):
                          prints {"V_s", "V_y0", "V_y", "V_ys"} as one JSON object.

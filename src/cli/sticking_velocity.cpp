@@ -30,7 +30,7 @@ const std::map<std::string, Option>& options() {
       {"--poisson-ratio", {&StickingVelocityInput::poisson, "particle Poisson ratio, in (-1, 0.5)", [](double v) { return v > -1 && v < 0.5; }}},
       {"--wall-youngs-modulus", {&StickingVelocityInput::wallYoungs, "wall Young's modulus (Pa), in [1e3, 1e13]", [](double v) { return v >= 1e3 && v <= 1e13; }}},
       {"--wall-poisson-ratio", {&StickingVelocityInput::wallPoisson, "wall Poisson ratio, in (-1, 0.5)", [](double v) { return v > -1 && v < 0.5; }}},
-      {"--surface-energy", {&StickingVelocityInput::surfaceEnergy, "surface energy Gamma (J/m^2), in [1e-6, 10]", [](double v) { return v >= 1e-6 && v <= 10.0; }}},
+      {"--work-of-adhesion", {&StickingVelocityInput::workOfAdhesion, "work of adhesion W = 2 gamma (J/m^2; 000's Gamma), in [1e-6, 10]", [](double v) { return v >= 1e-6 && v <= 10.0; }}},
       {"--yield-pressure", {&StickingVelocityInput::yieldPressure, "yield contact pressure p_y (Pa), in [1e3, 1e11]", [](double v) { return v >= 1e3 && v <= 1e11; }}},
   };
   return table;
@@ -77,7 +77,7 @@ int stickingVelocity(const Arguments& args) {
     v = stickingVelocities(input);
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(std::string("these options give no valid Nan et al. law (000 Eqs. 28-59): ") + e.what() +
-                                "; a higher --yield-pressure or a lower --surface-energy moves the contact out of it");
+                                "; a higher --yield-pressure or a lower --work-of-adhesion moves the contact out of it");
   }
   const nlohmann::ordered_json out{{"V_s", v.Vs}, {"V_y0", v.Vy0}, {"V_y", v.Vy}, {"V_ys", v.Vys}};
   std::printf("%s\n", out.dump().c_str());

@@ -17,7 +17,7 @@ StickingVelocities stickingVelocities(const StickingVelocityInput& in) {
   NanParameters p;
   p.effectiveModulus = effectiveModulus(in.youngs, in.poisson, in.wallYoungs, in.wallPoisson);
   p.effectiveRadius = in.radius;
-  p.workOfAdhesion = in.surfaceEnergy;
+  p.workOfAdhesion = in.workOfAdhesion;
   p.yieldPressure = in.yieldPressure;
   const NanAdhesivePlastic law(p);
   const double m = 4.0 / 3.0 * std::numbers::pi * std::pow(in.radius, 3) * in.density;

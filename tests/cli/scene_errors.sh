@@ -56,7 +56,7 @@ check "runaway: log rows kept" test "$(wc -l < "$scratch/blowup/blowup.csv")" -g
 # Other commands (item 9).
 expect_error "JSON number overflow" 1 "a number out of range" sh -c "echo '{\"particles\": [1e400]}' | \"$sqdem\" geometry -"
 expect_error "directory as JSON" 1 "is a directory, not a JSON file" "$sqdem" geometry "$scratch"
-sv="--density 1350 --youngs-modulus 1.2e9 --poisson-ratio 0.33 --wall-youngs-modulus 166e9 --wall-poisson-ratio 0.28 --surface-energy 0.24 --yield-pressure 30e6"
+sv="--density 1350 --youngs-modulus 1.2e9 --poisson-ratio 0.33 --wall-youngs-modulus 166e9 --wall-poisson-ratio 0.28 --work-of-adhesion 0.24 --yield-pressure 30e6"
 expect_error "sticking-velocity radius 1e-300" 1 "option --radius = '1e-300': expected particle radius R \(m\), in \[1e-9, 1\]" \
   "$sqdem" sticking-velocity --radius 1e-300 $sv
 expect_error "sticking-velocity repeated option" 1 "option --radius is given twice" \

@@ -24,7 +24,7 @@ struct StickingVelocityInput {
   double poisson = 0.0;         ///< nu of the particle
   double wallYoungs = 0.0;      ///< E of the wall (Pa)
   double wallPoisson = 0.0;     ///< nu of the wall
-  double surfaceEnergy = 0.0;   ///< Gamma (J/m^2), the seed's surface energy in f_ce = 3/2 pi Gamma R
+  double workOfAdhesion = 0.0;  ///< W = 2 gamma (J/m^2), the seed's Gamma in f_ce = 3/2 pi Gamma R
   double yieldPressure = 0.0;   ///< p_y (Pa), the softer body's yield contact pressure
 };
 
