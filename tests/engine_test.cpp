@@ -379,11 +379,12 @@ TEST(Engine, SceneErrorsNameLineKeyAndWhatIsAllowed) {
                    "reduced_stiffness, restitution, rolling_hysteresis, friction, and for elliptic_hertz: roughness); "
                    "'lambda_max' is a key of normal: becker_kamlah");
   expectSceneError(withInteraction("    roughness: {sigma: 1.0e-6}\n"), "'interactions[0].roughness.asperity_count': missing");
-  expectSceneError(withInteraction("    normal: elliptic_jkr\n    roughness: {sigma: 1.0e-6, asperity_count: 10}\n    surface_energy: 0.1\n"),
+  expectSceneError(withInteraction("    normal: nan_adhesive\n    roughness: {sigma: 1.0e-6, asperity_count: 10}\n"
+                                   "    surface_energy: 0.1\n    yield_pressure: 1.0e6\n"),
                    "'interactions[0].roughness': unknown key (allowed: materials, normal, tangential, eccentricity, cap_factor, "
-                   "reduced_stiffness, restitution, rolling_hysteresis, friction, and for elliptic_jkr: surface_energy); "
-                   "'roughness' is a key of normal: elliptic_hertz, volume_sphere_hertz (Greenwood-Williamson roughness is "
-                   "built on the elliptic Hertz factors only");
+                   "reduced_stiffness, restitution, rolling_hysteresis, friction, and for nan_adhesive: surface_energy, "
+                   "yield_pressure, elastic_stiffness, plastic_stiffness); 'roughness' is a key of normal: elliptic_hertz, "
+                   "volume_sphere_hertz, elliptic_jkr (Greenwood-Williamson roughness is built on elastic asperities");
   expectSceneError(withInteraction("    normal: jamari\n    hardness: 1.0e6\n    surface_energy: 0.1\n"),
                    "'surface_energy' is a key of normal: becker_kamlah, haervig_jkr, elliptic_jkr, nan_adhesive (adhesion goes "
                    "with haervig_jkr, elliptic_jkr, nan_adhesive and becker_kamlah; an adhesive form of jamari is not built)");

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "sqdem/mechanics/elliptic.hpp"
 #include "sqdem/mechanics/roughness_gw.hpp"
 #include "sqdem/validation/table1.hpp"
 
@@ -91,6 +92,36 @@ TEST(GreenwoodWilliamsonValidation, Table3Case1ForceAtH1IsInconsistentWithItsOwn
       }
     }
   }
+}
+
+// Rough adhesive contact (RoughJkrLaw, roughness_gw.hpp): Eq. 29 with elliptic JKR asperities.
+// As W -> 0 it is the Greenwood-Williamson law of Eqs. 33-36 (W = 1e-12 J/m^2: within 1e-4);
+// with adhesion every asperity pulls, so the force is lower at every separation, and far out
+// (only the highest asperities touching, each near its snap-in) the contact attracts.
+TEST(GreenwoodWilliamson, JkrAsperitiesReduceToHertzWithoutAdhesion) {
+  RelativeRadii r;
+  r.Ri = 4e-6;
+  r.Rj = 1e-5;
+  r.Rc = r.Ri * r.Rj / (r.Ri + r.Rj);
+  const NormalContact c{.radii = r, .factors = hertzFactors(r.ratio(), EccentricityMethod::Exact), .effectiveModulus = 1e9};
+  const RoughContact rough{.asperityCount = 50.0, .sigma = 2e-8};
+  const GreenwoodWilliamsonLaw hertz{rough};
+  double worst = 0.0;
+  for (const double h : {-1.0, 0.0, 1.0, 2.0, 3.0}) {
+    GreenwoodWilliamsonLaw::History none;
+    RoughJkrLaw::History nothing;
+    const NormalResponse smooth = hertz.force(c, -h * rough.sigma, none);
+    const NormalResponse tiny = RoughJkrLaw{rough, 1e-12}.force(c, -h * rough.sigma, nothing);
+    const NormalResponse adhesive = RoughJkrLaw{rough, 0.05}.force(c, -h * rough.sigma, nothing);
+    worst = std::max({worst, std::abs(tiny.force / smooth.force - 1.0), std::abs(tiny.area / smooth.area - 1.0)});
+    std::printf("h = %+.0f: Hertz asperities F = %.5e N, A = %.4e m^2; JKR asperities (gamma 0.05) F = %+.5e N, A = %.4e m^2\n",
+                h, smooth.force, smooth.area, adhesive.force, adhesive.area);
+    EXPECT_LT(adhesive.force, smooth.force) << h;
+    EXPECT_GT(adhesive.area, smooth.area) << h;  // JKR contacts are larger than Hertz at the same overlap
+    if (h == 3.0) EXPECT_LT(adhesive.force, 0.0);
+  }
+  std::printf("W -> 0: within %.2g of Greenwood-Williamson\n", worst);
+  EXPECT_LT(worst, 1e-4);
 }
 
 }  // namespace

@@ -10,21 +10,35 @@ namespace {
 
 static_assert(NormalLawComponent<HertzLaw> && NormalLawComponent<GreenwoodWilliamsonLaw> &&
               NormalLawComponent<BeckerKamlahLaw> && NormalLawComponent<HaervigJkrLaw> &&
-              NormalLawComponent<EllipticJkrLaw> && NormalLawComponent<NanAdhesiveLaw> && NormalLawComponent<JamariLaw>);
+              NormalLawComponent<EllipticJkrLaw> && NormalLawComponent<RoughJkrLaw> &&
+              NormalLawComponent<NanAdhesiveLaw> && NormalLawComponent<JamariLaw>);
 
 /// Refuses any key of `in` that is not in `allowed` (`what` names whose keys they are).
 void allowOnly(const LawInput& in, std::span<const std::string_view> allowed, std::string_view what);
 
 constexpr std::array<std::string_view, 1> hertzKeys{"roughness"};
+constexpr std::array<std::string_view, 2> jkrKeys{"surface_energy", "roughness"};
 constexpr std::array<std::string_view, 2> roughnessKeys{"sigma", "asperity_count"};
+
+/// The `roughness` mapping: Greenwood-Williamson's sigma_s and N A_n (004 Eqs. 29-36).
+RoughContact readRoughness(const LawInput& in) {
+  const auto rough = in.child("roughness");
+  allowOnly(*rough, roughnessKeys, "roughness");
+  return {.asperityCount = rough->positive("asperity_count", "-, N A_n, asperities on the nominal contact area"),
+          .sigma = rough->positive("sigma", "m, standard deviation of asperity heights")};
+}
 
 /// elliptic_hertz and volume_sphere_hertz: smooth, or Greenwood-Williamson with `roughness`.
 NormalLaw readHertz(const LawInput& in, const PairElasticity&) {
   if (!in.has("roughness")) return HertzLaw{};
-  const auto rough = in.child("roughness");
-  allowOnly(*rough, roughnessKeys, "roughness");
-  return GreenwoodWilliamsonLaw{{.asperityCount = rough->positive("asperity_count", "-, N A_n, asperities on the nominal contact area"),
-                                 .sigma = rough->positive("sigma", "m, standard deviation of asperity heights")}};
+  return GreenwoodWilliamsonLaw{readRoughness(in)};
+}
+
+/// elliptic_jkr: smooth, or Greenwood-Williamson with JKR asperities with `roughness`.
+NormalLaw readJkr(const LawInput& in, const PairElasticity& pair) {
+  const EllipticJkrLaw smooth = EllipticJkrLaw::read(in, pair);
+  if (!in.has("roughness")) return smooth;
+  return RoughJkrLaw{readRoughness(in), smooth.surfaceEnergy};
 }
 
 template <class L>
@@ -37,7 +51,7 @@ constexpr std::array entries{
     NormalLawEntry{"volume_sphere_hertz", false, hertzKeys, readHertz},
     NormalLawEntry{"becker_kamlah", true, BeckerKamlahLaw::keys, readAs<BeckerKamlahLaw>},
     NormalLawEntry{"haervig_jkr", true, HaervigJkrLaw::keys, readAs<HaervigJkrLaw>},
-    NormalLawEntry{"elliptic_jkr", true, EllipticJkrLaw::keys, readAs<EllipticJkrLaw>},
+    NormalLawEntry{"elliptic_jkr", true, jkrKeys, readJkr},
     NormalLawEntry{"nan_adhesive", true, NanAdhesiveLaw::keys, readAs<NanAdhesiveLaw>},
     NormalLawEntry{"jamari", true, JamariLaw::keys, readAs<JamariLaw>},
 };
@@ -45,9 +59,8 @@ constexpr std::array entries{
 /// Why a key of some laws is not combined with the others (appended to the message).
 std::string_view combinationRefused(std::string_view key) {
   if (key == "roughness") {
-    return "Greenwood-Williamson roughness is built on the elliptic Hertz factors only: the review (004 after Eq. 36) "
-           "allows the Johnson-Greenwood factors in their place but not at which state of the JKR curve they are taken, "
-           "and the seeds give no rough plastic law";
+    return "Greenwood-Williamson roughness is built on elastic asperities, Hertz or elliptic JKR; the seeds give no "
+           "rough plastic law";
   }
   if (key == "surface_energy") {
     return "adhesion goes with haervig_jkr, elliptic_jkr, nan_adhesive and becker_kamlah; an adhesive form of jamari "
@@ -76,7 +89,7 @@ void allowOnly(const LawInput& in, std::span<const std::string_view> allowed, st
 bool adhesive(const NormalLaw& law) {
   if (const auto* bk = std::get_if<BeckerKamlahLaw>(&law)) return bk->surfaceEnergy > 0.0;
   return std::holds_alternative<HaervigJkrLaw>(law) || std::holds_alternative<EllipticJkrLaw>(law) ||
-         std::holds_alternative<NanAdhesiveLaw>(law);
+         std::holds_alternative<RoughJkrLaw>(law) || std::holds_alternative<NanAdhesiveLaw>(law);
 }
 
 NormalLaw readNormalLaw(const NormalLawEntry& entry, const LawInput& in, const PairElasticity& pair) {

@@ -88,7 +88,6 @@ class EllipticJkr {
 /// History: attached. A pull-off |F| of the contact counts as F_C in the Coulomb limit.
 struct EllipticJkrLaw {
   using History = JkrHistory;
-  static constexpr std::array<std::string_view, 1> keys{"surface_energy"};
   double surfaceEnergy = 0.0;  ///< gamma (J/m^2) the law uses, W = 2 gamma
 
   static EllipticJkrLaw read(const LawInput& in, const PairElasticity& pair);

@@ -12,6 +12,7 @@
 //     + surface_energy: JKR on its elastic contact, Thornton-Ning style            + attached
 //   haervig_jkr          HaervigJkrLaw           001 Eqs. 7-10, 24                -
 //   elliptic_jkr         EllipticJkrLaw          004 Eqs. 19-28, 001 Eq. 24       attached
+//     + roughness: RoughJkrLaw, Eq. 29 with elliptic JKR asperities                 -
 //   nan_adhesive         NanAdhesiveLaw          000 Eqs. 1-67                    attached, alpha_max
 //   jamari               JamariLaw               004 Eqs. 41-46 + elastic unloading  largest overlap
 
@@ -31,7 +32,7 @@
 namespace sqdem {
 
 using NormalLaw = std::variant<HertzLaw, GreenwoodWilliamsonLaw, BeckerKamlahLaw, HaervigJkrLaw, EllipticJkrLaw,
-                               NanAdhesiveLaw, JamariLaw>;
+                               RoughJkrLaw, NanAdhesiveLaw, JamariLaw>;
 
 struct NormalLawEntry {
   std::string_view name;
@@ -47,7 +48,7 @@ const NormalLawEntry& normalLaw(std::string_view name, const LawInput& in, std::
 /// another law is named as such), then the law validates its values.
 NormalLaw readNormalLaw(const NormalLawEntry& entry, const LawInput& in, const PairElasticity& pair);
 
-/// Whether the law is adhesive (a pull-off force; Haervig JKR, elliptic JKR, Nan, Becker-Kamlah
+/// Whether the law is adhesive (Haervig JKR, elliptic JKR smooth or rough, Nan, Becker-Kamlah
 /// with surface_energy).
 bool adhesive(const NormalLaw& law);
 

@@ -48,4 +48,25 @@ struct GreenwoodWilliamsonLaw {
   double reach(double, double) const { return 4.0 * rough.sigma; }
 };
 
+/// normal: elliptic_jkr with `roughness` (normal_law.hpp component): Greenwood-Williamson with
+/// adhesive asperities. The review lets the JKR factors (Eqs. 27-28) stand for gamma and beta in
+/// Eqs. 35-36 (after Eq. 36); gamma_JG varies along the JKR curve, so it is taken at each
+/// asperity's own overlap w: Eq. 29 with the asperity force of Eq. 27,
+/// f(w) = 4/3 E* R_c1^1/2 w^3/2 gamma_JG(w), the elliptic JKR force (jkr_elliptic.hpp):
+///   F = N A_n int_0^inf f(sigma s) phi(s + h) ds,  A = N A_n int_0^inf A_JG(sigma s) phi(s + h) ds
+/// (exp-sinh quadrature). Asperities snap into contact at w = 0 and act on the stable JKR branch
+/// for w >= 0, as in Fuller & Tabor's loading curves (Proc. R. Soc. A 345, 1975): no asperity
+/// history, hence no hysteresis. As W -> 0 it is GreenwoodWilliamsonLaw with R_c1 and the JKR
+/// factors' Hertz limit (tested). Range 4 sigma; S_n by central differences. The Coulomb limit
+/// stays mu F_n (no rule for the adhesion of a rough contact's asperities in friction).
+struct RoughJkrLaw {
+  struct History {};
+  RoughContact rough;
+  double surfaceEnergy = 0.0;  ///< gamma (J/m^2), W = 2 gamma
+
+  NormalResponse force(const NormalContact& c, double overlap, History&) const;
+  double range(const History&) const { return 4.0 * rough.sigma; }
+  double reach(double, double) const { return 4.0 * rough.sigma; }
+};
+
 }  // namespace sqdem

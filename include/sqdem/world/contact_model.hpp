@@ -17,8 +17,9 @@
 //   total normal force  not clamped: near the end of a damped contact it turns slightly tensile,
 //                   which the restitution relation zeta(e) of 001 Eq. 12 assumes (clamping it
 //                   would raise the effective e, 0.30 -> 0.40).
-// Combinations refused, each with its reason, by the scene loader: roughness with a plastic or
-// adhesive law, rolling resistance without haervig_jkr, elliptic Mindlin on volume spheres.
+// Combinations refused, each with its reason, by the law registry and the scene loader:
+// roughness with the plastic laws, Haervig's or Nan's, adhesion with Jamari, rolling resistance
+// without haervig_jkr, elliptic Mindlin on volume spheres.
 // Units: Pa, m, kg, s, N.
 
 #include "sqdem/contact/contact_geometry.hpp"
