@@ -71,6 +71,7 @@ NanState NanAdhesivePlastic::evaluate(double overlap, NanHistory& history) const
   }
   if (overlap <= u.alphaCp) {
     s.force = -u.fCp + u.kC * (u.alphaCp - overlap);
+    s.stiffness = u.kC;
     s.branch = NanBranch::Adhesive;
     return s;
   }
@@ -80,6 +81,7 @@ NanState NanAdhesivePlastic::evaluate(double overlap, NanHistory& history) const
   // On the plastic line only at a new maximum past yield; with k_p = k_el the two lines coincide
   // below alpha_y, so comparing fe and fp would pick the label by round-off.
   s.branch = overlap > alphaY_ && overlap >= history.maxOverlap ? NanBranch::Plastic : NanBranch::Elastic;
+  s.stiffness = s.branch == NanBranch::Plastic ? kP_ : u.kE;
   if (overlap > alphaY_ && overlap > history.maxOverlap) history.maxOverlap = overlap;
   return s;
 }
@@ -116,9 +118,7 @@ NormalResponse NanAdhesiveLaw::force(const NormalContact& c, double overlap, His
   const NanAdhesivePlastic& law = *valid;
   const NanState s = law.evaluate(overlap, h);
   if (s.branch == NanBranch::Detached) return {.acting = false};
-  const NanUnloading u = law.unloadingFrom(h.maxOverlap);
-  const double slope = s.branch == NanBranch::Adhesive ? u.kC : s.branch == NanBranch::Plastic ? law.kP() : u.kE;
-  return {.force = s.force, .stiffness = slope, .pullOff = law.pullOffForceElastic(), .regime = describe(s.branch)};
+  return {.force = s.force, .stiffness = s.stiffness, .pullOff = law.pullOffForceElastic(), .regime = describe(s.branch)};
 }
 
 double NanAdhesiveLaw::range(const History& h) const {

@@ -57,6 +57,7 @@ struct NanHistory {
 
 struct NanState {
   double force = 0.0;
+  double stiffness = 0.0;  ///< slope of the branch in use, k_e, k_p or k_c (N/m)
   NanBranch branch = NanBranch::Detached;
 };
 
