@@ -77,7 +77,7 @@ int main(int argc, char** argv) {
       World world = denseBed(c, edge, 1);
       for (int s = 0; s < 5; ++s) world.step();  // first contacts are cold solves
       const StepTiming before = world.timing();
-      const WorldStatistics statsBefore = world.statistics();
+      const ContactStatistics statsBefore = world.statistics();
       std::vector<double> rates;
       for (int sample = 0; sample < 5; ++sample) {
         const auto t0 = std::chrono::steady_clock::now();
@@ -87,18 +87,18 @@ int main(int argc, char** argv) {
       }
       const StepTiming& t = world.timing();
       const double total = (t.integration - before.integration) + (t.broadPhase - before.broadPhase) +
-                           (t.detection - before.detection) + (t.law - before.law) + (t.reduction - before.reduction);
+                           (t.contacts - before.contacts) + (t.reduction - before.reduction);
       const auto share = [&](double now, double then) { return 100.0 * (now - then) / total; };
-      const WorldStatistics& st = world.statistics();
+      const ContactStatistics& st = world.statistics();
       const double calls = static_cast<double>(st.detectorCalls - statsBefore.detectorCalls);
       std::size_t pairContacts = 0;
-      for (const Contact& k : world.contacts()) pairContacts += k.onWall() ? 0 : 1;
+      for (const ContactView k : world.contacts()) pairContacts += k.onWall() ? 0 : 1;
       std::printf("%-44s %d thread(s): %.3g particle-steps/s | Z = %.2f | detector %.2f it/call | "
-                  "integration %.1f %%, broad phase %.1f %%, detection %.1f %%, law %.1f %%, reduction %.1f %%\n",
+                  "integration %.1f %%, broad phase %.1f %%, contacts (detection and laws) %.1f %%, reduction %.1f %%\n",
                   c.name, threads, median(rates), 2.0 * pairContacts / world.particles().size(),
                   calls > 0 ? (st.detectorIterations - statsBefore.detectorIterations) / calls : 0.0,
                   share(t.integration, before.integration), share(t.broadPhase, before.broadPhase),
-                  share(t.detection, before.detection), share(t.law, before.law), share(t.reduction, before.reduction));
+                  share(t.contacts, before.contacts), share(t.reduction, before.reduction));
     }
   }
   return 0;

@@ -8,7 +8,7 @@
 
 #include "sqdem/contact/detector.hpp"
 #include "sqdem/mechanics/mindlin_deresiewicz.hpp"
-#include "sqdem/world/contact_model.hpp"
+#include "sqdem/interaction/contact_model.hpp"
 
 namespace sqdem {
 namespace {

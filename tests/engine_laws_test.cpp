@@ -55,7 +55,7 @@ Sample driveTo(World& world, double delta) {
   p.velocity[1] = Vec3((x - p.position[1].x()) / world.timeStep(), 0.0, 0.0);
   p.position[1] = Vec3(x, 0.0, 0.0);
   world.computeForces();
-  for (const Contact& c : world.contacts()) return {c.geometry.overlap, c.force.normal, true};
+  for (const ContactView c : world.contacts()) return {c.overlap(), c.normalLoad().force, true};
   return {delta, 0.0, false};
 }
 
@@ -159,7 +159,7 @@ TEST(EngineLaws, EllipticJkrSpheresSettleAtTheZeroLoadOverlap) {
   world.setTimeStep(0.05 * std::sqrt(0.5 * m / (2.0 * jkr.Estar * jkr.a0())));  // contact stiffness 2 E* a_0
   for (int s = 0; s < 40000; ++s) world.step();
   ASSERT_EQ(world.contacts().size(), 1u);
-  const double overlap = world.contacts().front().geometry.overlap;
+  const double overlap = world.contacts().front().overlap();
   std::printf("settled overlap %.6e m, JKR delta_0 %.6e m (%+.3f %%), E_kin %.2e J\n", overlap, jkr.zeroLoadOverlap(),
               100.0 * (overlap / jkr.zeroLoadOverlap() - 1.0), world.kineticEnergy());
   EXPECT_NEAR(overlap, jkr.zeroLoadOverlap(), 0.01 * jkr.zeroLoadOverlap());
@@ -185,7 +185,7 @@ TEST(EngineLaws, EllipticJkrSphereDetachesOnceFromAWallAtThePullOff) {
     p.velocity[0] = Vec3((R - delta - p.position[0].x()) / world.timeStep(), 0.0, 0.0);
     p.position[0] = Vec3(R - delta, 0.0, 0.0);
     world.computeForces();
-    return world.contacts().empty() ? std::optional<double>() : std::optional(world.contacts().front().force.normal);
+    return world.contacts().empty() ? std::optional<double>() : std::optional(world.contacts().front().normalLoad().force);
   };
   const double scale = std::abs(jkr.detachmentOverlap());
   double tensile = 0.0, lastAttached = 0.0, firstDetached = 0.0;

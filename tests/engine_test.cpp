@@ -331,7 +331,7 @@ TEST(Engine, BeckerKamlahBedSettles) {
   EXPECT_EQ(world.statistics().detectorFailures, 0);
   ASSERT_GT(world.contacts().size(), 40u);
   std::size_t plastic = 0;
-  for (const Contact& c : world.contacts()) plastic += c.history.normal.load<BeckerKamlahLaw::History>().plastic.maxOverlap > c.geometry.overlap;
+  for (const ContactView c : world.contacts()) plastic += c.normalHistory().load<BeckerKamlahLaw::History>().plastic.maxOverlap > c.overlap();
   EXPECT_GT(plastic, 0u);  // contacts remember a larger overlap than the current one
   for (std::size_t i = 0; i < world.particles().size(); ++i) ASSERT_TRUE(world.particles().position[i].allFinite());
 }

@@ -370,9 +370,8 @@ TEST(PackingMeasures, StressTensorOfAContactSetEqualsTheLoveWeberSum) {
       world.computeForces();
     }
     ASSERT_EQ(world.contacts().size(), 1u);
-    const Contact& c = world.contacts().front();
     const Vec3 l = world.particles().position[1] - world.particles().position[0];
-    const Vec3 f = c.force.onB;
+    const Vec3 f = world.contacts().front().force();
     const PackingMeasures measures = measurePacking(world);
     const double V = measures.stressVolume, scale = f.norm() * l.norm() / V;
     for (int i = 0; i < 3; ++i) {

@@ -77,7 +77,7 @@ class Printer : public RunObserver {
 };
 
 void printSummary(const World& world, const RunReport& report, double wall, const RunOutput& output) {
-  const WorldStatistics& st = world.statistics();
+  const ContactStatistics& st = world.statistics();
   const PackingMeasures m = measurePacking(world);
   std::printf("summary: %ld steps in %.2f s (%.3g particle-steps/s), %zu contacts, %d neighbour-list builds\n",
               report.stepsThisRun, wall, report.stepsThisRun * static_cast<double>(world.particles().size()) / wall,

@@ -77,9 +77,9 @@ void VtkSeries::writeFrame(const World& world) {
   writeCollection("particles", particleFrames_);
   if (!contacts_) return;
 
-  std::vector<const Contact*> pairs;
-  for (const Contact& c : world.contacts()) {
-    if (!c.onWall()) pairs.push_back(&c);
+  std::vector<ContactView> pairs;
+  for (const ContactView c : world.contacts()) {
+    if (!c.onWall()) pairs.push_back(c);
   }
   const std::size_t m = pairs.size();
   std::ostringstream net;
@@ -87,16 +87,16 @@ void VtkSeries::writeFrame(const World& world) {
   net << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
       << "  <PolyData>\n    <Piece NumberOfPoints=\"" << 2 * m << "\" NumberOfLines=\"" << m << "\">\n      <Points>\n";
   dataArray(net, "Float64", "position", 3, 2 * m, [&](auto& o, std::size_t k) {
-    const Contact& c = *pairs[k / 2];
-    put(o, k % 2 == 0 ? p.position[c.a] : Vec3(p.position[c.b] + c.shift));
+    const ContactView& c = pairs[k / 2];
+    put(o, k % 2 == 0 ? p.position[c.a()] : Vec3(p.position[c.b()] + c.shift()));
   });
   net << "      </Points>\n      <Lines>\n";
   dataArray(net, "Int64", "connectivity", 1, 2 * m, [](auto& o, std::size_t k) { o << k; });
   dataArray(net, "Int64", "offsets", 1, m, [](auto& o, std::size_t k) { o << 2 * (k + 1); });
   net << "      </Lines>\n      <CellData Scalars=\"normal_force\">\n";
-  dataArray(net, "Float64", "normal_force", 1, m, [&](auto& o, std::size_t k) { o << pairs[k]->force.normal; });
-  dataArray(net, "Float64", "overlap", 1, m, [&](auto& o, std::size_t k) { o << pairs[k]->geometry.overlap; });
-  dataArray(net, "Float64", "area", 1, m, [&](auto& o, std::size_t k) { o << pairs[k]->force.area; });
+  dataArray(net, "Float64", "normal_force", 1, m, [&](auto& o, std::size_t k) { o << pairs[k].normalLoad().force; });
+  dataArray(net, "Float64", "overlap", 1, m, [&](auto& o, std::size_t k) { o << pairs[k].overlap(); });
+  dataArray(net, "Float64", "area", 1, m, [&](auto& o, std::size_t k) { o << pairs[k].normalLoad().area; });
   net << "      </CellData>\n    </Piece>\n  </PolyData>\n</VTKFile>\n";
   const std::string contactFile = frameName(name_, "contacts", contactFrames_.size(), ".vtp");
   writeFileAtomically(directory_ / contactFile, net.str());

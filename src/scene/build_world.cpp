@@ -51,12 +51,12 @@ void refuseOverlaps(const Scene& scene, const World& world) {
   World probe = world;  // the world itself starts without history
   probe.computeForces();
   const std::vector<std::uint32_t>& id = probe.particles().id;  // slots may have been re-ordered
-  for (const Contact& c : probe.contacts()) {
-    if (c.geometry.overlap <= 0.0 || (allows(id[c.a]) && (c.onWall() || allows(id[c.b])))) continue;
-    const std::uint32_t first = c.onWall() ? id[c.a] : std::min(id[c.a], id[c.b]);
+  for (const ContactView c : probe.contacts()) {
+    if (c.overlap() <= 0.0 || (allows(id[c.a()]) && (c.onWall() || allows(id[c.b()])))) continue;
+    const std::uint32_t first = c.onWall() ? id[c.a()] : std::min(id[c.a()], id[c.b()]);
     throw SceneError(scene.path + ": " + name(first) + " overlaps " +
-                     (c.onWall() ? "walls[" + std::to_string(c.b & ~wallFlag) + "]" : name(std::max(id[c.a], id[c.b]))) + " by " +
-                     shortNumber(c.geometry.overlap) + " m at the start; move it, or set allow_overlap: true on its entry");
+                     (c.onWall() ? "walls[" + std::to_string(c.wall()) + "]" : name(std::max(id[c.a()], id[c.b()]))) +
+                     " by " + shortNumber(c.overlap()) + " m at the start; move it, or set allow_overlap: true on its entry");
   }
 }
 

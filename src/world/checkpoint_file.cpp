@@ -13,7 +13,7 @@ namespace sqdem {
 namespace {
 
 constexpr char magic[8] = {'s', 'q', 'd', 'e', 'm', 'C', 'K', 'P'};
-constexpr std::uint32_t formatVersion = 5;
+constexpr std::uint32_t formatVersion = 6;
 constexpr std::size_t headerSize = sizeof magic + 4 + 8 + 8 + 8 + 4;
 constexpr std::uint64_t largestPayload = std::uint64_t{1} << 40;  // 1 TiB: anything larger is corrupt
 
@@ -55,9 +55,9 @@ Fingerprint& Fingerprint::operator()(std::string_view s) {
 
 std::uint64_t buildFingerprint() {
   Fingerprint f;
-  for (const std::size_t size : {sizeof(Contact), sizeof(Wall), sizeof(WorldStatistics), sizeof(CandidatePair),
-                                 sizeof(Vec3), sizeof(Quat), sizeof(Vec4), sizeof(ContactGeometry),
-                                 sizeof(ContactHistory), sizeof(ContactForce)}) {
+  for (const std::size_t size : {sizeof(Wall), sizeof(ContactStatistics), sizeof(CandidatePair), sizeof(Vec3),
+                                 sizeof(Quat), sizeof(Vec4), sizeof(ContactStatus), sizeof(NormalHistory),
+                                 sizeof(NormalLoad)}) {
     f(static_cast<std::uint64_t>(size));
   }
   return f(static_cast<std::uint64_t>(formatVersion)).value();

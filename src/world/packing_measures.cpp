@@ -19,10 +19,10 @@ double volumeInSlab(const Superquadric& s, const Pose& pose, double lo, double h
 
 std::vector<int> coordinationNumbers(const World& world) {
   std::vector<int> z(world.particles().size(), 0);
-  for (const Contact& c : world.contacts()) {
+  for (const ContactView c : world.contacts()) {
     if (c.onWall()) continue;
-    ++z[c.a];
-    ++z[c.b];
+    ++z[c.a()];
+    ++z[c.b()];
   }
   return z;
 }
@@ -65,10 +65,9 @@ PackingMeasures measurePacking(const World& world) {
     m.stressVolume = base * (ceiling->plane.point.z() - floor->plane.point.z());
     m.betweenWallsFraction = volumeTotal / m.stressVolume;
   }
-  for (const Contact& c : world.contacts()) {
-    const Vec3 branch = c.onWall() ? Vec3(0.5 * (c.geometry.pointA + c.geometry.pointB) - p.position[c.a])
-                                   : Vec3(p.position[c.b] + c.shift - p.position[c.a]);
-    m.stress += branch * c.force.onB.transpose();
+  for (const ContactView c : world.contacts()) {
+    const Vec3 branch = c.onWall() ? Vec3(c.point() - p.position[c.a()]) : Vec3(p.position[c.b()] + c.shift() - p.position[c.a()]);
+    m.stress += branch * c.force().transpose();
   }
   // Symmetrised from a copy: assigning m.stress from an expression that reads its transpose
   // aliases in Eigen (each off-diagonal would read its already-overwritten twin).

@@ -25,8 +25,8 @@ RunHealth::RunHealth(const World& world) {
   const double fall = g.norm() > 0.0 ? (world.domain().length().cwiseProduct(g.cwiseAbs() / g.norm())).sum() : 0.0;
   budget_ = world.kineticEnergy();
   for (std::size_t i = 0; i < p.size(); ++i) budget_ += p.mass[i] * (g.norm() * fall + 0.5);
-  for (const Contact& c : world.contacts()) {
-    budget_ += 0.4 * std::abs(c.force.onB.dot(c.geometry.normal)) * std::max(0.0, c.geometry.overlap);
+  for (const ContactView c : world.contacts()) {
+    budget_ += 0.4 * std::abs(c.force().dot(c.normal())) * std::max(0.0, c.overlap());
   }
 }
 

@@ -1,5 +1,5 @@
-// World checkpoints: the dynamic state as raw little-endian records (Contact, Wall, vectors of
-// Eigen fixed-size types are plain data). The file around it (checkpoint_file.hpp) carries the
+// World checkpoints: the dynamic state as raw little-endian records (Wall, vectors of Eigen
+// fixed-size types are plain data; the contact store writes its own arrays). The file around it (checkpoint_file.hpp) carries the
 // magic, the build and scene fingerprints and a checksum; here every count and index is checked
 // again while reading, so even a payload that passed the checksum cannot index out of range.
 
@@ -25,8 +25,7 @@ void World::writeState(CheckpointWriter& out) const {
   out.putVector(boundingRadius_);
   out.putVector(walls_);
   out.putVector(wallReference_);
-  out.putVector(pairs_);
-  out.putVector(interacting_);
+  interactions_.writeState(out);
   out.putVector(neighbours_.referencePositions());
   out.putVector(neighbours_.pairs());
   out.put(neighbours_.builds());
@@ -57,19 +56,22 @@ void World::readState(CheckpointReader& in) {
   std::vector<double> boundingRadius;
   std::vector<Wall> wallRecords;
   std::vector<Vec3> wallReference, reference;
-  std::vector<Contact> pairs;
-  std::vector<std::uint32_t> interacting;
   std::vector<CandidatePair> candidates;
   int builds = 0;
   in.getVector(boundingRadius, n);
   in.getVector(wallRecords, walls);
   in.getVector(wallReference, walls);
-  in.getVector(pairs, anyLength);
-  in.getVector(interacting, anyLength);
+  require(boundingRadius.size() == n && wallRecords.size() == walls, "array lengths");
+  for (std::size_t i = 0; i < n; ++i) {
+    require(restored.shape[i] < shapes_.size() && restored.material[i] < materials_.size(), "shape or material index");
+  }
+  for (const Wall& w : wallRecords) require(w.material < materials_.size(), "wall material index");
+  Interactions interactions = Interactions::readState(
+      in, {restored, shapes_, boundingRadius, wallRecords, models_, materials_.size(), neighbours_.skin(), dt_});
   in.getVector(reference, n);
   in.getVector(candidates, anyLength);
   in.get(builds);
-  WorldStatistics statistics;
+  ContactStatistics statistics;
   Vec3 gravity;
   double viscousDamping = 0.0, dt = 0.0, time = 0.0;
   int reorderInterval = 0;
@@ -85,23 +87,9 @@ void World::readState(CheckpointReader& in) {
 
   // Every index the engine will follow.
   std::vector<std::uint8_t> seen(n, 0);
-  for (std::size_t i = 0; i < n; ++i) {
-    require(restored.shape[i] < shapes_.size() && restored.material[i] < materials_.size(), "shape or material index");
-    require(restored.id[i] < n && !seen[restored.id[i]]++, "particle ids");
-  }
-  require(boundingRadius.size() == n && wallRecords.size() == walls && (reference.empty() || reference.size() == n),
-          "array lengths");
-  for (const Wall& w : wallRecords) require(w.material < materials_.size(), "wall material index");
+  for (std::size_t i = 0; i < n; ++i) require(restored.id[i] < n && !seen[restored.id[i]]++, "particle ids");
+  require(reference.empty() || reference.size() == n, "array lengths");
   require(wallReference.empty() || wallReference.size() == walls, "wall reference points");
-  for (std::size_t k = 0; k < pairs.size(); ++k) {
-    const Contact& c = pairs[k];
-    require(c.a < n && (c.onWall() ? (c.b & ~wallFlag) < walls : c.b < n && c.a != c.b), "contact index");
-    require(static_cast<unsigned>(c.geometry.status) <= static_cast<unsigned>(ContactStatus::Degenerate), "contact status");
-    require(k == 0 || pairs[k - 1].key() < c.key(), "contact order");
-  }
-  for (std::size_t k = 0; k < interacting.size(); ++k) {
-    require(interacting[k] < pairs.size() && (k == 0 || interacting[k - 1] < interacting[k]), "interacting contacts");
-  }
   for (const CandidatePair& c : candidates) require(c.a < n && c.b < n && c.a != c.b, "candidate pair index");
   require(builds >= 0 && std::isfinite(dt) && dt > 0.0 && std::isfinite(time), "counters");
 
@@ -109,8 +97,7 @@ void World::readState(CheckpointReader& in) {
   boundingRadius_ = std::move(boundingRadius);
   walls_ = std::move(wallRecords);
   wallReference_ = std::move(wallReference);
-  pairs_ = std::move(pairs);
-  interacting_ = std::move(interacting);
+  interactions_ = std::move(interactions);
   neighbours_.restore(std::move(reference), std::move(candidates), builds);
   statistics_ = statistics;
   gravity_ = gravity;
@@ -119,7 +106,6 @@ void World::readState(CheckpointReader& in) {
   dt_ = dt;
   time_ = time;
   forcesCurrent_ = forcesCurrent;
-  indexInvolvement();
 }
 
 }  // namespace sqdem

@@ -2,12 +2,14 @@
 // ContactGeometry: everything the contact laws may know about a contact (DESIGN.md §2:
 // geometry and mechanics meet only here).
 
+#include <cstdint>
+
 #include "sqdem/geometry/curvature.hpp"
 #include "sqdem/math/types.hpp"
 
 namespace sqdem {
 
-enum class ContactStatus {
+enum class ContactStatus : std::uint8_t {
   Converged,      ///< common-normal pair found to tolerance (overlap may be negative: a gap)
   Separated,      ///< further apart than the cut-off (culled or solved); no contact
   MaxIterations,  ///< iteration limit reached before the tolerance

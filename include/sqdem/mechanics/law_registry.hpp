@@ -53,20 +53,24 @@ NormalLaw readNormalLaw(const NormalLawEntry& entry, const LawInput& in, const P
 bool adhesive(const NormalLaw& law);
 
 /// A law's response through its own history type, kept in a contact's NormalHistory slot.
+template <NormalLawComponent Law>
+NormalResponse normalResponse(const Law& law, const NormalContact& c, double overlap, NormalHistory& slot) {
+  auto h = slot.load<typename Law::History>();
+  const NormalResponse r = law.force(c, overlap, h);
+  slot.store(h);
+  return r;
+}
 inline NormalResponse normalResponse(const NormalLaw& law, const NormalContact& c, double overlap, NormalHistory& slot) {
-  return std::visit(
-      [&](const auto& l) {
-        auto h = slot.load<typename std::decay_t<decltype(l)>::History>();
-        const NormalResponse r = l.force(c, overlap, h);
-        slot.store(h);
-        return r;
-      },
-      law);
+  return std::visit([&](const auto& l) { return normalResponse(l, c, overlap, slot); }, law);
 }
 
 /// range(history) of normal_law.hpp (m).
+template <NormalLawComponent Law>
+double normalRange(const Law& law, const NormalHistory& slot) {
+  return law.range(slot.load<typename Law::History>());
+}
 inline double normalRange(const NormalLaw& law, const NormalHistory& slot) {
-  return std::visit([&](const auto& l) { return l.range(slot.load<typename std::decay_t<decltype(l)>::History>()); }, law);
+  return std::visit([&](const auto& l) { return normalRange(l, slot); }, law);
 }
 
 /// reach(E*, R) of normal_law.hpp (m); throws std::invalid_argument when the law admits no

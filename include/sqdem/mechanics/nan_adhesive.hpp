@@ -98,7 +98,7 @@ double nanCriticalTimeStep(double mass, double stiffness);
 /// rule). Snap-in at alpha = 0, detachment below alpha_jp; while attached its range is unbounded.
 /// S_n = the slope of the branch in use (k_e, k_p or k_c). History: attached, alpha_max. A contact
 /// whose R* the parameters do not admit (Eq. 36 gives k_cl < 0: too small an R* for this k_el)
-/// answers valid = false; the engine counts it (WorldStatistics::lawFailures).
+/// answers valid = false; the engine counts it (ContactStatistics::lawFailures).
 struct NanAdhesiveLaw {
   using History = NanHistory;
   static constexpr std::array<std::string_view, 4> keys{"surface_energy", "yield_pressure", "elastic_stiffness",

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "sqdem/mechanics/elliptic.hpp"
-#include "sqdem/world/contact_model.hpp"
+#include "sqdem/interaction/contact_model.hpp"
 #include "sqdem/world/domain.hpp"
 #include "sqdem/scene/wall_path.hpp"
 #include "sqdem/world/world.hpp"

@@ -17,6 +17,7 @@
 //   mean coordination    2 N_pp / N over all particles (particle-particle contacts; walls and
 //                        rattlers included), and over particles with >= 2 contacts.
 
+#include "sqdem/geometry/pose.hpp"
 #include "sqdem/world/world.hpp"
 
 namespace sqdem {

@@ -4,9 +4,9 @@
 //   half kick, drift (and walls move) -> broad phase (neighbour list and candidate contacts,
 //   rebuilt when particles or walls moved half the skin) -> narrow phase (detector, warm-started
 //   from the contact's history) -> contact law -> forces reduced per particle -> half kick.
-// Contacts are computed in parallel (OpenMP) into their own records; each particle then sums
-// its contacts in their key order (also in parallel), so results do not depend on the number
-// of threads.
+// Contacts live in the interaction layer (interactions.hpp): computed in parallel (OpenMP) into
+// their own slots, summed per particle in key order, so results do not depend on the number of
+// threads.
 
 #include <array>
 #include <cstdint>
@@ -15,12 +15,11 @@
 #include <ranges>
 #include <vector>
 
-#include "sqdem/contact/detector.hpp"
 #include "sqdem/dynamics/particle_store.hpp"
-#include "sqdem/geometry/plane.hpp"
+#include "sqdem/dynamics/wall.hpp"
 #include "sqdem/geometry/superquadric.hpp"
+#include "sqdem/interaction/interactions.hpp"
 #include "sqdem/world/neighbour_list.hpp"
-#include "sqdem/world/contact_model.hpp"
 
 namespace sqdem {
 
@@ -36,69 +35,12 @@ struct Material {
   double yieldStrength = 0.0;  ///< Y (Pa) in simple tension, for plastic laws; pair value = min of the two
 };
 
-/// Force control of a wall: before each step the wall moves along its normal with
-///   v = max_speed clamp((p_target - p) / p_target, -1, 1),
-/// limited to |v| <= |F_target - F| / (2 k dt) while it touches particles (proportional
-/// control; the wall advances into the particles while p < p_target). p and F are the elastic
-/// part of the wall's normal load: the contacts' damping depends on the wall's own velocity and
-/// would feed the command back into the reading. k is the sum of the wall contacts' normal
-/// stiffnesses, so one step closes at most half the force error the contacts see at once; this
-/// keeps the loop stable however large max_speed is (without it, max_speed dt k / F_target > 2
-/// made the wall chatter in and out of the bed).
-struct WallServo {
-  double pressure = 0.0;  ///< target normal pressure (Pa), > 0
-  double maxSpeed = 0.0;  ///< (m/s), > 0
-};
-
-/// An infinite plane moving with a prescribed velocity or under servo control; `force` is what
-/// the particles exert on it.
-struct Wall {
-  Plane plane;
-  Vec3 velocity = Vec3::Zero();  ///< (m/s)
-  std::uint32_t material = 0;
-  Vec3 force = Vec3::Zero();     ///< (N), from the last force computation
-  Vec3 elasticForce = Vec3::Zero();  ///< the same without the contacts' normal damping (N)
-  double stiffness = 0.0;        ///< sum of its contacts' normal stiffnesses S_n (N/m)
-  std::optional<WallServo> servo;
-};
-
-inline constexpr std::uint32_t wallFlag = 0x80000000u;
-
-/// A candidate pair and its history. b is a particle slot, or wallFlag | wall index.
-struct Contact {
-  std::uint32_t a = 0, b = 0;
-  Vec3 shift = Vec3::Zero();    ///< periodic image offset of b (m)
-  ContactGeometry geometry;     ///< last solution: warm start for the next step
-  ContactHistory history;       ///< tangential spring, rolling displacement, the normal law's record
-  ContactForce force;           ///< force on b from the last step
-  /// When the last solve found the pair Separated: a lower bound of its gap (m), reduced every
-  /// step by a bound of the motion since; the pair is not solved again while it stays > 0.
-  double separation = 0.0;
-
-  bool onWall() const { return (b & wallFlag) != 0; }
-  std::uint64_t key() const { return (std::uint64_t{a} << 32) | b; }
-};
-
-struct WorldStatistics {
-  long long detectorCalls = 0;
-  long long detectorIterations = 0;
-  long long detectorFailures = 0;  ///< statuses other than Converged/Separated (contact skipped)
-  /// detectorFailures by ContactStatus (index = the status's value).
-  std::array<long long, contactStatusCount> failuresByStatus{};
-  long long deepOverlaps = 0;      ///< contacts with overlap > 0.5 R_vol (time step too large?)
-  /// Adhesive contacts lost while their law still held them (the detector gave no geometry
-  /// within its cut-off): should stay 0, the cut-off covers ContactModel::reach.
-  long long lostAdhesions = 0;
-  long long lawFailures = 0;       ///< contacts whose law had no valid form (NormalResponse::valid)
-};
-
 /// Wall-clock seconds spent in each part of the step (accumulated).
 struct StepTiming {
   double integration = 0.0;  ///< kicks and drifts
   double broadPhase = 0.0;   ///< neighbour list, candidate list, history carry-over
-  double detection = 0.0;    ///< common-normal detector
-  double law = 0.0;          ///< contact laws
-  double reduction = 0.0;    ///< forces and torques per particle, statistics
+  double contacts = 0.0;     ///< detectors and contact laws (the fused kernels)
+  double reduction = 0.0;    ///< forces and torques per particle and wall
 };
 
 class World {
@@ -146,11 +88,10 @@ class World {
   const std::vector<Wall>& walls() const { return walls_; }
   /// The contacts that carried force in the last computation (touching, or rough within
   /// range), in key order.
-  auto contacts() const {
-    return interacting_ | std::views::transform([this](std::uint32_t k) -> const Contact& { return pairs_[k]; });
-  }
+  auto contacts() const { return interactions_.acting(); }
+  const Interactions& interactions() const { return interactions_; }
   const Domain& domain() const { return domain_; }
-  const WorldStatistics& statistics() const { return statistics_; }
+  const ContactStatistics& statistics() const { return statistics_; }
   const StepTiming& timing() const { return timing_; }
   const NeighbourList& neighbourList() const { return neighbours_; }
 
@@ -181,13 +122,9 @@ class World {
 
  private:
   const ContactModel& model(std::uint32_t ma, std::uint32_t mb) const { return models_[ma * materials_.size() + mb]; }
-  const ContactModel& lawOf(const Contact& c) const {
-    return model(particles_.material[c.a], c.onWall() ? walls_[c.b & ~wallFlag].material : particles_.material[c.b]);
-  }
-  /// Within its law's range (touching, a rough contact's gap below 4 sigma, an adhesive contact
-  /// until it detaches).
-  bool interacting(const Contact& c) const {
-    return c.geometry.converged() && c.geometry.overlap > -c.history.range(lawOf(c));
+  /// What the interaction layer reads of this world.
+  InteractionScene interactionScene() const {
+    return {particles_, shapes_, boundingRadius_, walls_, models_, materials_.size(), neighbours_.skin(), dt_};
   }
   /// The candidate list from the neighbour list and the walls within reach, carrying the
   /// histories of persisting pairs; kept until the next rebuild (particles or walls moved more
@@ -196,11 +133,6 @@ class World {
   bool wallsMovedHalfSkin() const;
   double servoVelocity(std::size_t w) const;  ///< along wall w's normal (m/s), WallServo
   double largestRange() const;  ///< the largest gap any law acts across (m)
-  /// Per particle, the indices of its contacts in key order (for the parallel reduction).
-  void indexInvolvement();
-  void detect(Contact& c) const;    ///< narrow phase, warm-started from c.geometry
-  void applyLaw(Contact& c) const;  ///< force of a contact within its law's range, updates its history
-
   std::vector<Superquadric> shapes_;
   std::vector<Material> materials_;
   std::vector<ContactModel> models_;
@@ -211,19 +143,8 @@ class World {
   std::vector<double> boundingRadius_;
   std::vector<Wall> walls_;
   std::vector<Vec3> wallReference_;       ///< wall points at the last candidate build
-  std::vector<Contact> pairs_;            ///< every candidate of the current neighbour list, key order
-  /// What the reduction needs of a force-carrying contact, packed densely (the full records
-  /// are ~440 bytes): force on B, contact point, moment on B, B's periodic shift.
-  struct ContactLoad {
-    Vec3 force, point, moment, shift;
-  };
-  static constexpr std::uint32_t bodyBFlag = 0x80000000u;  ///< in involvement_: the particle is body B
-  std::vector<std::uint8_t> acting_;               ///< per contact of pairs_: carries force this step
-  std::vector<ContactLoad> loads_;                 ///< per contact of pairs_, valid where acting_
-  std::vector<std::uint32_t> involvementStart_;    ///< particle i's contacts: involvement_[start[i], start[i+1])
-  std::vector<std::uint32_t> involvement_;         ///< contact index, | bodyBFlag where i is body B
-  std::vector<std::uint32_t> interacting_;  ///< indices of the force-carrying ones in pairs_
-  WorldStatistics statistics_;
+  Interactions interactions_;
+  ContactStatistics statistics_;
   StepTiming timing_;
   Vec3 gravity_ = Vec3::Zero();
   double viscousDamping_ = 0.0;

@@ -1,14 +1,18 @@
-#include "sqdem/world/contact_model.hpp"
+#pragma once
+// contactForce (contact_model.hpp) for one normal law type: the body the engine's kernels
+// instantiate per law (no dispatch per contact) and the generic entry point visits.
 
 #include <cmath>
-#include <numbers>
+#include <variant>
 
-namespace sqdem {
-namespace {
+#include "sqdem/interaction/contact_model.hpp"
+
+namespace sqdem::detail {
 
 /// What the normal law sees of the contact: relative radii and factors from the curvatures, or
 /// the volume-equivalent spheres' circle (Ri = Rj = R*, Rc = R*/2).
-NormalContact normalContact(const ContactModel& model, const ContactGeometry& geometry, const ContactKinematics& motion) {
+inline NormalContact normalContact(const ContactModel& model, const ContactGeometry& geometry,
+                                   const ContactKinematics& motion) {
   NormalContact c;
   c.effectiveModulus = model.effectiveModulus;
   c.radiusSum = motion.volumeRadiusA + (motion.volumeRadiusB > 0.0 ? motion.volumeRadiusB : motion.volumeRadiusA);
@@ -27,14 +31,13 @@ NormalContact normalContact(const ContactModel& model, const ContactGeometry& ge
   return c;
 }
 
-}  // namespace
-
-ContactForce contactForce(const ContactModel& model, const ContactGeometry& geometry, const ContactKinematics& motion,
-                          ContactHistory& history, double dt) {
+template <NormalLawComponent Law>
+ContactForce contactForce(const ContactModel& model, const Law& law, const ContactGeometry& geometry,
+                          const ContactKinematics& motion, ContactHistory& history, double dt) {
   const double delta = geometry.overlap;
   const Vec3& n = geometry.normal;
   const NormalContact c = normalContact(model, geometry, motion);
-  const NormalResponse r = normalResponse(model.normal, c, delta, history.normal);
+  const NormalResponse r = normalResponse(law, c, delta, history.normal);
   if (!r.acting) {  // the law keeps its own record; the tangential and rolling springs end
     history.spring.setZero();
     history.rolling.setZero();
@@ -57,12 +60,13 @@ ContactForce contactForce(const ContactModel& model, const ContactGeometry& geom
     out.onB += tangential.force(c, geometry.curvatureA, geometry.curvatureB, n, r.area, vt, limit, model.damping,
                                 motion.effectiveMass, history.spring, dt);
   }
-  if (model.rolling) {
-    out.momentOnB = model.rolling->moment(std::get<HaervigJkrLaw>(model.normal), c, delta, n, vt, motion.volumeRadiusA,
-                                          motion.volumeRadiusB, motion.angularVelocityA, motion.angularVelocityB,
-                                          history.rolling, dt);
+  if constexpr (std::is_same_v<Law, HaervigJkrLaw>) {
+    if (model.rolling) {
+      out.momentOnB = model.rolling->moment(law, c, delta, n, vt, motion.volumeRadiusA, motion.volumeRadiusB,
+                                            motion.angularVelocityA, motion.angularVelocityB, history.rolling, dt);
+    }
   }
   return out;
 }
 
-}  // namespace sqdem
+}  // namespace sqdem::detail

@@ -1,0 +1,120 @@
+#pragma once
+// The contact store (DESIGN.md §2-3): every candidate pair of the current neighbour list, in key
+// order (a, then b, walls after particles), as a structure of arrays so that a kernel touches
+// only the fields it reads and writes:
+//   identity     a, b (b = particle slot, or wallFlag | wall index), b's periodic shift
+//   warm start   status, both surface points in their body frames, the separation bound
+//   geometry     normal, overlap, contact point (the reduction's lever arm)
+//   histories    tangential spring, the normal law's record, the rolling displacement
+//   load         acting, force and moment on B, the normal force's parts and the area
+// The rolling displacement and the moment exist only in a store made withRolling (a scene
+// without rolling resistance stores neither). Curvatures are not stored: the fused kernels
+// hand them from the detector to the law within one contact.
+
+#include <cstdint>
+#include <tuple>
+#include <vector>
+
+#include "sqdem/contact/contact_geometry.hpp"
+#include "sqdem/dynamics/wall.hpp"
+#include "sqdem/mechanics/normal_law.hpp"
+
+namespace sqdem {
+
+/// The parts of a contact's normal force that outputs and wall servos read.
+struct NormalLoad {
+  double force = 0.0;      ///< normal force magnitude (N), damping included
+  double damping = 0.0;    ///< its viscous part (N)
+  double stiffness = 0.0;  ///< S_n of the elastic part (N/m)
+  double area = 0.0;       ///< contact area (m^2)
+};
+
+struct ContactStore {
+  std::vector<std::uint32_t> a, b;
+  std::vector<Vec3> shift;  ///< periodic image offset of b (m)
+
+  std::vector<ContactStatus> status;  ///< of the last solve
+  std::vector<Vec3> localA, localB;   ///< surface points in A's and B's body frames (m)
+  /// When the last solve found the pair Separated: a lower bound of its gap (m), reduced every
+  /// step by a bound of the motion since; the pair is not solved again while it stays > reach.
+  std::vector<double> separation;
+  std::vector<Vec3> normal;      ///< unit, from A towards B
+  std::vector<double> overlap;   ///< (m), < 0: a gap
+  std::vector<Vec3> point;       ///< midpoint of the two surface points (m)
+
+  std::vector<Vec3> spring;                ///< tangential spring (m)
+  std::vector<NormalHistory> normalHistory;  ///< the normal law's record
+  std::vector<Vec3> rolling;               ///< rolling displacement (m), withRolling only
+
+  std::vector<std::uint8_t> acting;  ///< carried force in the last computation
+  std::vector<Vec3> force;           ///< on B (N); A receives -force
+  std::vector<Vec3> moment;          ///< pure moment on B (N m), withRolling only
+  std::vector<NormalLoad> load;
+
+  bool withRolling = false;
+
+  std::size_t size() const { return a.size(); }
+  bool onWall(std::size_t k) const { return (b[k] & wallFlag) != 0; }
+  std::uint64_t key(std::size_t k) const { return (std::uint64_t{a[k]} << 32) | b[k]; }
+
+  /// The arrays a contact carries from one step to the next (warm start, geometry, histories):
+  /// what candidate rebuilds carry over.
+  static constexpr auto stateArrays =
+      std::tuple{&ContactStore::status, &ContactStore::localA, &ContactStore::localB, &ContactStore::separation,
+                 &ContactStore::normal, &ContactStore::overlap, &ContactStore::point, &ContactStore::spring,
+                 &ContactStore::normalHistory, &ContactStore::rolling};
+  /// Calls f(array) for every array, in a fixed order: the one list that checkpoints,
+  /// re-ordering and resizing use, so a new field cannot be forgotten there.
+  template <typename Store, typename F>
+  static void forEachArray(Store& s, F&& f) {
+    f(s.a);
+    f(s.b);
+    f(s.shift);
+    std::apply([&](auto... member) { (f(s.*member), ...); }, stateArrays);
+    f(s.acting);
+    f(s.force);
+    f(s.moment);
+    f(s.load);
+  }
+  /// Whether an array (one of this store's) is kept: all but rolling and moment, which only a
+  /// store withRolling keeps.
+  bool keeps(const void* array) const { return withRolling || (array != &rolling && array != &moment); }
+
+  /// Appends a fresh candidate (no geometry, no history).
+  void add(std::uint32_t bodyA, std::uint32_t bodyB, const Vec3& bShift);
+  /// Forgets contact k's geometry and history (it is solved cold next time).
+  void reset(std::size_t k);
+  /// Copies contact `from` of `other` (same layout) into contact k: every state array.
+  void carryOver(std::size_t k, const ContactStore& other, std::size_t from);
+  /// The store re-ordered: contact k of the result is contact order[k] of this one.
+  void permute(const std::vector<std::uint32_t>& order);
+  /// Contact k seen with A and B exchanged (the pair's slots changed order).
+  void exchangeBodies(std::size_t k);
+};
+
+/// Read access to one contact of a store (outputs, tests).
+class ContactView {
+ public:
+  ContactView(const ContactStore& store, std::uint32_t k) : s_(&store), k_(k) {}
+
+  std::uint32_t a() const { return s_->a[k_]; }
+  /// Particle slot of B (only for a particle pair).
+  std::uint32_t b() const { return s_->b[k_]; }
+  bool onWall() const { return s_->onWall(k_); }
+  std::uint32_t wall() const { return s_->b[k_] & ~wallFlag; }
+  const Vec3& shift() const { return s_->shift[k_]; }
+  const Vec3& normal() const { return s_->normal[k_]; }
+  double overlap() const { return s_->overlap[k_]; }
+  const Vec3& point() const { return s_->point[k_]; }
+  const Vec3& force() const { return s_->force[k_]; }  ///< on B (N)
+  Vec3 moment() const { return s_->withRolling ? s_->moment[k_] : Vec3::Zero(); }
+  const NormalLoad& normalLoad() const { return s_->load[k_]; }
+  const NormalHistory& normalHistory() const { return s_->normalHistory[k_]; }
+  const Vec3& spring() const { return s_->spring[k_]; }
+
+ private:
+  const ContactStore* s_;
+  std::uint32_t k_;
+};
+
+}  // namespace sqdem

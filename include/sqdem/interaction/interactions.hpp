@@ -1,0 +1,110 @@
+#pragma once
+// The interaction layer (DESIGN.md §2-3): the contact store, the contacts grouped by pair type
+// (shape-class pair x the material pair's contact model), one fused detect-then-law kernel per
+// group with the law chosen once per group (no per-contact dispatch), and the reduction of the
+// contacts' loads to particles and walls in a fixed order.
+//
+// Determinism: every contact is computed into its own slot of the store; each particle then sums
+// its contacts in key order (the order of a serial sweep over the key-ordered store), and walls
+// sum theirs in key order, so results do not depend on the thread count or the grouping.
+
+#include <array>
+#include <cstdint>
+#include <ranges>
+#include <vector>
+
+#include "sqdem/dynamics/particle_store.hpp"
+#include "sqdem/dynamics/wall.hpp"
+#include "sqdem/geometry/superquadric.hpp"
+#include "sqdem/interaction/contact_model.hpp"
+#include "sqdem/interaction/contact_store.hpp"
+#include "sqdem/interaction/pair_kind.hpp"
+
+namespace sqdem {
+
+class CheckpointReader;
+class CheckpointWriter;
+
+/// Counters of the contact computations, accumulated over a run.
+struct ContactStatistics {
+  long long detectorCalls = 0;
+  long long detectorIterations = 0;
+  long long detectorFailures = 0;  ///< statuses other than Converged/Separated (contact skipped)
+  /// detectorFailures by ContactStatus (index = the status's value).
+  std::array<long long, contactStatusCount> failuresByStatus{};
+  long long deepOverlaps = 0;      ///< contacts with overlap > 0.5 R_vol (time step too large?)
+  /// Adhesive contacts lost while their law still held them (the detector gave no geometry
+  /// within its cut-off): should stay 0, the cut-off covers ContactModel::reach.
+  long long lostAdhesions = 0;
+  long long lawFailures = 0;       ///< contacts whose law had no valid form (NormalResponse::valid)
+
+  ContactStatistics& operator+=(const ContactStatistics& o);
+};
+
+/// What the kernels read of the world (all unchanged during a force computation).
+struct InteractionScene {
+  const ParticleStore& particles;
+  const std::vector<Superquadric>& shapes;
+  const std::vector<double>& boundingRadius;  ///< per particle slot (m)
+  const std::vector<Wall>& walls;
+  /// Contact model of material pair (i, j) at models[i * materialCount + j] (symmetric).
+  const std::vector<ContactModel>& models;
+  std::size_t materialCount = 0;
+  double skin = 0.0;  ///< detector cut-off (m): gaps within it are solved, for warm starts
+  double dt = 0.0;    ///< time step (s)
+};
+
+/// A candidate pair for Interactions::setCandidates: b a particle slot or wallFlag | wall.
+struct CandidateKey {
+  std::uint32_t a = 0, b = 0;
+  Vec3 shift = Vec3::Zero();
+  std::uint64_t key() const { return (std::uint64_t{a} << 32) | b; }
+};
+
+class Interactions {
+ public:
+  /// Replaces the candidates (sorted by key, unique), carrying over the geometry and histories
+  /// of pairs that persist, and regroups them.
+  void setCandidates(const std::vector<CandidateKey>& candidates, const InteractionScene& scene);
+  /// Detection and laws of every candidate; adds to the statistics.
+  void compute(const InteractionScene& scene, ContactStatistics& statistics);
+  /// Per particle: F = m (g - c v) plus its contacts' loads, and the torques; per wall the
+  /// force, its elastic part and stiffness; the list of force-carrying contacts.
+  void reduce(ParticleStore& particles, const Vec3& gravity, double drag, std::vector<Wall>& walls);
+  /// Follows a re-ordering of the particle slots (new slot of old slot i = slotOf[i]): keys are
+  /// remapped, pairs whose slots change order are seen from the other body, order restored.
+  void renumber(const std::vector<std::uint32_t>& slotOf, const InteractionScene& scene);
+
+  /// The contacts that carried force in the last computation, in key order.
+  auto acting() const {
+    return interacting_ | std::views::transform([this](std::uint32_t k) { return ContactView(store_, k); });
+  }
+  const ContactStore& store() const { return store_; }
+  std::size_t actingCount() const { return interacting_.size(); }
+  /// Bytes held per candidate contact (store, groups, particle index) and in all.
+  std::size_t bytes() const;
+
+  void writeState(CheckpointWriter& out) const;
+  /// A state written by writeState, every index checked against the scene (its particles
+  /// those of the same checkpoint); throws CheckpointError when the checkpoint does not fit.
+  static Interactions readState(CheckpointReader& in, const InteractionScene& scene);
+
+ private:
+  /// Contacts of one pair kind and one contact model.
+  struct Group {
+    PairKind kind;
+    std::uint32_t model;  ///< index into InteractionScene::models
+    std::vector<std::uint32_t> members;  ///< contact indices, ascending
+  };
+  void regroup(const InteractionScene& scene);
+  void indexInvolvement(std::size_t particleCount);
+
+  ContactStore store_;
+  std::vector<Group> groups_;
+  static constexpr std::uint32_t bodyBFlag = 0x80000000u;  ///< in involvement_: the particle is body B
+  std::vector<std::uint32_t> involvementStart_;  ///< particle i's contacts: involvement_[start[i], start[i+1])
+  std::vector<std::uint32_t> involvement_;       ///< contact index, | bodyBFlag where i is body B
+  std::vector<std::uint32_t> interacting_;       ///< indices of the force-carrying contacts
+};
+
+}  // namespace sqdem

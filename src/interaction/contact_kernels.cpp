@@ -1,0 +1,160 @@
+// The fused detect-then-law kernels: one instantiation per pair kind and normal law type, run
+// over a group's contacts with the law fixed for the whole loop.
+
+#include <cmath>
+#include <variant>
+
+#include "contact_force.hpp"
+#include "sqdem/contact/detector.hpp"
+#include "sqdem/interaction/interactions.hpp"
+
+namespace sqdem {
+namespace {
+
+Pose poseOf(const ParticleStore& p, std::uint32_t i) { return {p.position[i], p.orientation[i]}; }
+
+/// The pair kind's detector for contact k, warm-started from the store.
+template <PairKind Kind>
+ContactGeometry detect(const InteractionScene& scene, const ContactModel& model, ContactStore& s, std::uint32_t k) {
+  const ParticleStore& p = scene.particles;
+  const std::uint32_t a = s.a[k], b = s.b[k];
+  const Superquadric& A = scene.shapes[p.shape[a]];
+  // Gaps within the skin are solved too (rough and adhesive contacts act across them, and every
+  // candidate is warm-started next step); a law that does not use curvatures does not pay for them.
+  const DetectorSettings settings{.cutoff = scene.skin, .curvatures = model.usesCurvatures()};
+  if constexpr (Kind == PairKind::ParticleWall) {
+    return detectContact(A, poseOf(p, a), scene.walls[b & ~wallFlag].plane, settings);
+  } else {
+    const Superquadric& B = scene.shapes[p.shape[b]];
+    const Pose poseB{p.position[b] + s.shift[k], p.orientation[b]};
+    if constexpr (Kind == PairKind::SphereSphere) {
+      return detectContact(A, poseOf(p, a), B, poseB, settings);  // closed form: cheaper than any cull
+    } else {
+      // A pair found separated stays so until the particles could have moved by its gap.
+      if (s.separation[k] > 0.0) {
+        s.separation[k] -= scene.dt * (p.velocity[a].norm() + p.velocity[b].norm() +
+                                       p.angularVelocity[a].norm() * scene.boundingRadius[a] +
+                                       p.angularVelocity[b].norm() * scene.boundingRadius[b]);
+        if (s.separation[k] > model.reach) return ContactGeometry{};  // Separated, no iterations
+      }
+      ContactGeometry g;
+      if (s.status[k] == ContactStatus::Converged) {
+        ContactGeometry previous;
+        previous.status = ContactStatus::Converged;
+        previous.localPointA = s.localA[k];
+        previous.localPointB = s.localB[k];
+        g = detectContact(A, poseOf(p, a), B, poseB, settings, previous);
+      } else {
+        g = detectContact(A, poseOf(p, a), B, poseB, settings);
+      }
+      s.separation[k] = g.status == ContactStatus::Separated ? -g.overlap : 0.0;
+      return g;
+    }
+  }
+}
+
+/// Relative motion at the contact point.
+template <PairKind Kind>
+ContactKinematics kinematics(const InteractionScene& scene, const ContactStore& s, std::uint32_t k, const Vec3& point) {
+  const ParticleStore& p = scene.particles;
+  const std::uint32_t a = s.a[k], b = s.b[k];
+  ContactKinematics motion;
+  motion.volumeRadiusA = scene.shapes[p.shape[a]].volumeEquivalentRadius();
+  motion.angularVelocityA = p.angularVelocity[a];
+  const Vec3 velocityA = p.velocity[a] + p.angularVelocity[a].cross(point - p.position[a]);
+  if constexpr (Kind == PairKind::ParticleWall) {
+    motion.relativeVelocity = scene.walls[b & ~wallFlag].velocity - velocityA;
+    motion.effectiveMass = p.mass[a];
+  } else {
+    const Vec3 centreB = p.position[b] + s.shift[k];
+    motion.relativeVelocity = p.velocity[b] + p.angularVelocity[b].cross(point - centreB) - velocityA;
+    motion.volumeRadiusB = scene.shapes[p.shape[b]].volumeEquivalentRadius();
+    motion.angularVelocityB = p.angularVelocity[b];
+    motion.effectiveMass = p.mass[a] * p.mass[b] / (p.mass[a] + p.mass[b]);
+  }
+  return motion;
+}
+
+/// One group: detect, then (within the law's range) the law; the step's statistics.
+template <PairKind Kind, NormalLawComponent Law>
+void runGroup(const std::vector<std::uint32_t>& members, const ContactModel& model, const Law& law,
+              const InteractionScene& scene, ContactStore& s, ContactStatistics& statistics) {
+  long long calls = 0, iterations = 0, failures = 0, deep = 0, lost = 0, invalid = 0;
+  long long byStatus[contactStatusCount] = {};
+  const auto count = static_cast<std::ptrdiff_t>(members.size());
+#pragma omp parallel for schedule(dynamic, 64) reduction(+ : calls, iterations, failures, deep, lost, invalid, byStatus[:contactStatusCount])
+  for (std::ptrdiff_t m = 0; m < count; ++m) {
+    const std::uint32_t k = members[m];
+    const ContactGeometry g = detect<Kind>(scene, model, s, k);
+    s.status[k] = g.status;
+    s.localA[k] = g.localPointA;
+    s.localB[k] = g.localPointB;
+    s.normal[k] = g.normal;
+    s.overlap[k] = g.overlap;
+    s.point[k] = 0.5 * (g.pointA + g.pointB);
+    ContactHistory history{.spring = s.spring[k], .normal = s.normalHistory[k]};
+    if (s.withRolling) history.rolling = s.rolling[k];
+    // Out of its law's range a pair is a gap, kept as the next step's warm start or cull, and
+    // its history ends; within range the law acts, or keeps its history without acting (a
+    // detached contact inside a plastic dent).
+    const double range = normalRange(law, history.normal);
+    ContactForce force{.acting = false};
+    if (g.converged() && g.overlap > -range) {
+      force = detail::contactForce(model, law, g, kinematics<Kind>(scene, s, k, s.point[k]), history, scene.dt);
+      invalid += !force.valid;
+    } else {
+      lost += std::isinf(range);  // an adhesive contact its law still held
+      history = {};
+    }
+    s.spring[k] = history.spring;
+    s.normalHistory[k] = history.normal;
+    if (s.withRolling) {
+      s.rolling[k] = history.rolling;
+      s.moment[k] = force.momentOnB;
+    }
+    s.acting[k] = force.acting;
+    s.force[k] = force.onB;
+    s.load[k] = {force.normal, force.normalDamping, force.normalStiffness, force.area};
+    if constexpr (Kind != PairKind::ParticleWall) {
+      ++calls;
+      iterations += g.iterations;
+    }
+    if (g.status != ContactStatus::Converged && g.status != ContactStatus::Separated) {
+      ++failures;
+      ++byStatus[static_cast<int>(g.status)];
+    }
+    if (!g.converged() && s.separation[k] <= 0.0) s.reset(k);  // nothing to warm-start or cull
+    if (force.acting && g.overlap > 0.5 * scene.shapes[scene.particles.shape[s.a[k]]].volumeEquivalentRadius()) ++deep;
+  }
+  statistics.detectorCalls += calls;
+  statistics.detectorIterations += iterations;
+  statistics.detectorFailures += failures;
+  for (int k = 0; k < contactStatusCount; ++k) statistics.failuresByStatus[k] += byStatus[k];
+  statistics.deepOverlaps += deep;
+  statistics.lostAdhesions += lost;
+  statistics.lawFailures += invalid;
+}
+
+template <NormalLawComponent Law>
+void runGroup(PairKind kind, const std::vector<std::uint32_t>& members, const ContactModel& model, const Law& law,
+              const InteractionScene& scene, ContactStore& s, ContactStatistics& statistics) {
+  switch (kind) {
+    case PairKind::SphereSphere: return runGroup<PairKind::SphereSphere>(members, model, law, scene, s, statistics);
+    case PairKind::EllipsoidPair: return runGroup<PairKind::EllipsoidPair>(members, model, law, scene, s, statistics);
+    case PairKind::SuperquadricPair:
+      return runGroup<PairKind::SuperquadricPair>(members, model, law, scene, s, statistics);
+    case PairKind::ParticleWall: return runGroup<PairKind::ParticleWall>(members, model, law, scene, s, statistics);
+  }
+}
+
+}  // namespace
+
+void Interactions::compute(const InteractionScene& scene, ContactStatistics& statistics) {
+  for (const Group& group : groups_) {
+    const ContactModel& model = scene.models[group.model];
+    std::visit([&](const auto& law) { runGroup(group.kind, group.members, model, law, scene, store_, statistics); },
+               model.normal);
+  }
+}
+
+}  // namespace sqdem

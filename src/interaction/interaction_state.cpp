@@ -1,0 +1,63 @@
+// Checkpoints of the contact store: every array raw (plain data), then on reading every count,
+// index, status and the key order checked before the store is replaced.
+
+#include <algorithm>
+#include <string>
+
+#include "sqdem/interaction/interactions.hpp"
+#include "sqdem/world/checkpoint_file.hpp"
+
+namespace sqdem {
+namespace {
+
+void require(bool ok, const char* what) {
+  if (!ok) throw CheckpointError(std::string("checkpoint is corrupt (") + what + ")");
+}
+
+}  // namespace
+
+void Interactions::writeState(CheckpointWriter& out) const {
+  out.put(store_.withRolling);
+  ContactStore::forEachArray(store_, [&](const auto& array) { out.putVector(array); });
+  out.putVector(interacting_);
+}
+
+Interactions Interactions::readState(CheckpointReader& in, const InteractionScene& scene) {
+  Interactions out;
+  ContactStore& s = out.store_;
+  in.get(s.withRolling);
+  require(s.withRolling == std::any_of(scene.models.begin(), scene.models.end(),
+                                       [](const ContactModel& m) { return m.rolling.has_value(); }),
+          "rolling resistance state");
+  const std::uint64_t anyLength = ~std::uint64_t{0};  // bounded by the bytes left
+  std::uint64_t count = 0;
+  bool first = true;
+  ContactStore::forEachArray(s, [&](auto& array) {
+    if (!s.keeps(&array)) {
+      in.getVector(array, 0);
+      return;
+    }
+    in.getVector(array, first ? anyLength : count);
+    if (first) count = array.size(), first = false;
+    require(array.size() == count, "contact array length");
+  });
+  std::vector<std::uint32_t> interacting;
+  in.getVector(interacting, count);
+
+  const std::size_t n = scene.particles.size(), walls = scene.walls.size();
+  for (std::size_t k = 0; k < count; ++k) {
+    require(s.a[k] < n && (s.onWall(k) ? (s.b[k] & ~wallFlag) < walls : s.b[k] < n && s.a[k] != s.b[k]),
+            "contact index");
+    require(static_cast<unsigned>(s.status[k]) <= static_cast<unsigned>(ContactStatus::Degenerate), "contact status");
+    require(k == 0 || s.key(k - 1) < s.key(k), "contact order");
+  }
+  for (std::size_t k = 0; k < interacting.size(); ++k) {
+    require(interacting[k] < count && (k == 0 || interacting[k - 1] < interacting[k]), "interacting contacts");
+  }
+  out.interacting_ = std::move(interacting);
+  out.regroup(scene);
+  out.indexInvolvement(n);
+  return out;
+}
+
+}  // namespace sqdem

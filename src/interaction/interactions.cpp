@@ -1,0 +1,107 @@
+#include "sqdem/interaction/interactions.hpp"
+
+#include <algorithm>
+#include <map>
+#include <numeric>
+#include <stdexcept>
+
+namespace sqdem {
+namespace {
+
+/// Index of contact k's model in InteractionScene::models.
+std::uint32_t modelIndex(const InteractionScene& scene, const ContactStore& s, std::size_t k) {
+  const std::uint32_t ma = scene.particles.material[s.a[k]];
+  const std::uint32_t mb = s.onWall(k) ? scene.walls[s.b[k] & ~wallFlag].material : scene.particles.material[s.b[k]];
+  return static_cast<std::uint32_t>(std::min(ma, mb) * scene.materialCount + std::max(ma, mb));
+}
+
+PairKind kindOf(const InteractionScene& scene, const ContactStore& s, std::size_t k) {
+  const Superquadric& A = scene.shapes[scene.particles.shape[s.a[k]]];
+  return s.onWall(k) ? PairKind::ParticleWall : pairKind(A, scene.shapes[scene.particles.shape[s.b[k]]]);
+}
+
+bool anyRolling(const InteractionScene& scene) {
+  return std::any_of(scene.models.begin(), scene.models.end(), [](const ContactModel& m) { return m.rolling.has_value(); });
+}
+
+}  // namespace
+
+ContactStatistics& ContactStatistics::operator+=(const ContactStatistics& o) {
+  detectorCalls += o.detectorCalls;
+  detectorIterations += o.detectorIterations;
+  detectorFailures += o.detectorFailures;
+  for (int k = 0; k < contactStatusCount; ++k) failuresByStatus[k] += o.failuresByStatus[k];
+  deepOverlaps += o.deepOverlaps;
+  lostAdhesions += o.lostAdhesions;
+  lawFailures += o.lawFailures;
+  return *this;
+}
+
+void Interactions::setCandidates(const std::vector<CandidateKey>& candidates, const InteractionScene& scene) {
+  if (candidates.size() >= bodyBFlag) throw std::length_error("Interactions: more than 2^31 candidate contacts");
+  ContactStore next;
+  next.withRolling = anyRolling(scene);
+  for (const CandidateKey& c : candidates) next.add(c.a, c.b, c.shift);
+  // Carry the state of pairs that persist (both lists are sorted by key).
+  std::size_t previous = 0;
+  for (std::size_t k = 0; k < next.size(); ++k) {
+    while (previous < store_.size() && store_.key(previous) < next.key(k)) ++previous;
+    if (previous < store_.size() && store_.key(previous) == next.key(k)) next.carryOver(k, store_, previous);
+  }
+  store_ = std::move(next);
+  interacting_.clear();
+  regroup(scene);
+  indexInvolvement(scene.particles.size());
+}
+
+void Interactions::regroup(const InteractionScene& scene) {
+  std::map<std::pair<PairKind, std::uint32_t>, std::vector<std::uint32_t>> members;
+  for (std::uint32_t k = 0; k < store_.size(); ++k) members[{kindOf(scene, store_, k), modelIndex(scene, store_, k)}].push_back(k);
+  groups_.clear();
+  for (auto& [type, list] : members) groups_.push_back({type.first, type.second, std::move(list)});
+}
+
+void Interactions::indexInvolvement(std::size_t particleCount) {
+  // Counting sort of the contacts by particle, in key order within each particle.
+  involvementStart_.assign(particleCount + 1, 0);
+  for (std::size_t k = 0; k < store_.size(); ++k) {
+    ++involvementStart_[store_.a[k] + 1];
+    if (!store_.onWall(k)) ++involvementStart_[store_.b[k] + 1];
+  }
+  std::partial_sum(involvementStart_.begin(), involvementStart_.end(), involvementStart_.begin());
+  involvement_.resize(involvementStart_.back());
+  std::vector<std::uint32_t> fill(involvementStart_.begin(), involvementStart_.end() - 1);
+  for (std::uint32_t k = 0; k < store_.size(); ++k) {
+    involvement_[fill[store_.a[k]]++] = k;
+    if (!store_.onWall(k)) involvement_[fill[store_.b[k]]++] = k | bodyBFlag;
+  }
+}
+
+void Interactions::renumber(const std::vector<std::uint32_t>& slotOf, const InteractionScene& scene) {
+  for (std::size_t k = 0; k < store_.size(); ++k) {
+    store_.a[k] = slotOf[store_.a[k]];
+    if (store_.onWall(k)) continue;
+    store_.b[k] = slotOf[store_.b[k]];
+    if (store_.a[k] > store_.b[k]) store_.exchangeBodies(k);
+  }
+  std::vector<std::uint32_t> order(store_.size());
+  std::iota(order.begin(), order.end(), 0u);
+  std::sort(order.begin(), order.end(), [&](std::uint32_t x, std::uint32_t y) { return store_.key(x) < store_.key(y); });
+  store_.permute(order);
+  interacting_.clear();
+  for (std::uint32_t k = 0; k < store_.size(); ++k) {
+    if (store_.acting[k]) interacting_.push_back(k);
+  }
+  regroup(scene);
+  indexInvolvement(scene.particles.size());
+}
+
+std::size_t Interactions::bytes() const {
+  std::size_t total = 0;
+  ContactStore::forEachArray(store_, [&](const auto& array) { total += array.capacity() * sizeof(array[0]); });
+  for (const Group& g : groups_) total += g.members.capacity() * sizeof(std::uint32_t);
+  total += (involvementStart_.capacity() + involvement_.capacity() + interacting_.capacity()) * sizeof(std::uint32_t);
+  return total;
+}
+
+}  // namespace sqdem
