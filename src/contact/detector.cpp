@@ -47,13 +47,16 @@ SurfacePoint surfaceOfB(const PairFrame& f, const Vec3& p) {
   return {p, g, g / gn, gn, f.R * d.hessian * f.R.transpose()};
 }
 
-/// One evaluation of the common-normal residual and its Jacobian (see detector.hpp).
+/// One evaluation of the common-normal residual (see detector.hpp); its Jacobian is computed
+/// only when a Newton step is taken from it (withJacobian): a warm solve's last evaluation
+/// passes the tolerance and needs none.
 struct Iterate {
   SurfacePoint a, b;
   Vec3 t1, t2;    // tangent basis at A
   Vec3 tb1, tb2;  // tangent basis at B, aligned with (t1, t2) when nB = -nA
   Vec4 r;
   Mat4 J;
+  double overlap = 0.0, lengthScale = 0.0;
   double norm = 0.0;
   bool finite = false;
 };
@@ -76,9 +79,18 @@ Iterate evaluate(const PairFrame& f, const Vec3& pA, const Vec3& pB) {
   const double L = f.lengthScale;
   const Vec3 gap = pB - pA;
   const Vec3 normalSum = nA + nB;
-  const double overlap = -gap.dot(nA);
+  it.overlap = -gap.dot(nA);
+  it.lengthScale = L;
   it.r << L * it.t1.dot(normalSum), L * it.t2.dot(normalSum), it.t1.dot(gap), it.t2.dot(gap);
+  it.norm = it.r.norm();
+  it.finite = it.r.allFinite() && it.a.hessian.allFinite() && it.b.hessian.allFinite();
+  return it;
+}
 
+/// Sets it.J; it.finite becomes false if J is not finite.
+void withJacobian(Iterate& it) {
+  const double L = it.lengthScale;
+  const Vec3& nB = it.b.normal;
   const Vec3 tA[2] = {it.t1, it.t2};
   const Vec3 tB[2] = {it.tb1, it.tb2};
   for (int i = 0; i < 2; ++i) {
@@ -89,13 +101,11 @@ Iterate evaluate(const PairFrame& f, const Vec3& pA, const Vec3& pB) {
       it.J(i, j) = L * kA;
       it.J(i, j + 2) = L * kB;
       // d(t_i.(pB - pA)): -t_i.t_j from moving pA, overlap*kA from the basis turning with nA.
-      it.J(i + 2, j) = (i == j ? -1.0 : 0.0) + overlap * kA;
+      it.J(i + 2, j) = (i == j ? -1.0 : 0.0) + it.overlap * kA;
       it.J(i + 2, j + 2) = tA[i].dot(tB[j]);
     }
   }
-  it.norm = it.r.norm();
-  it.finite = it.r.allFinite() && it.J.allFinite();
-  return it;
+  it.finite = it.finite && it.J.allFinite();
 }
 
 /// Support points of A along n and of B along -n (A's frame) and the support gap
@@ -257,7 +267,14 @@ ContactGeometry newtonSolve(const PairFrame& f, const Pose& poseA, const Vec3& p
       status = ContactStatus::Stalled;
       break;
     }
-    if (attempt == 0) newton = dampedStep(current, 0.0);
+    if (attempt == 0) {
+      withJacobian(current);
+      if (!current.finite) {
+        status = ContactStatus::NonFinite;
+        break;
+      }
+      newton = dampedStep(current, 0.0);
+    }
     const Vec4 step = attempt < halvings ? Vec4(std::ldexp(1.0, -attempt) * newton)
                                          : dampedStep(current, dampings[attempt - halvings]);
     const Vec2 stepA = capped(step.head<2>(), maxStepA);

@@ -22,7 +22,7 @@ ContactGeometry detect(const InteractionScene& scene, const ContactModel& model,
   // Gaps within the skin are solved too (rough and adhesive contacts act across them, and every
   // candidate is warm-started next step); a law that does not use curvatures does not pay for them.
   const DetectorSettings settings{.cutoff = scene.skin, .curvatures = model.usesCurvatures()};
-  if constexpr (Kind == PairKind::ParticleWall) {
+  if constexpr (Kind == PairKind::ParticleWall || Kind == PairKind::SphereWall) {
     return detectContact(A, poseOf(p, a), scene.walls[b & ~wallFlag].plane, settings);
   } else {
     const Superquadric& B = scene.shapes[p.shape[b]];
@@ -62,7 +62,7 @@ ContactKinematics kinematics(const InteractionScene& scene, const ContactStore& 
   motion.volumeRadiusA = scene.shapes[p.shape[a]].volumeEquivalentRadius();
   motion.angularVelocityA = p.angularVelocity[a];
   const Vec3 velocityA = p.velocity[a] + p.angularVelocity[a].cross(point - p.position[a]);
-  if constexpr (Kind == PairKind::ParticleWall) {
+  if constexpr (Kind == PairKind::ParticleWall || Kind == PairKind::SphereWall) {
     motion.relativeVelocity = scene.walls[b & ~wallFlag].velocity - velocityA;
     motion.effectiveMass = p.mass[a];
   } else {
@@ -76,9 +76,19 @@ ContactKinematics kinematics(const InteractionScene& scene, const ContactStore& 
 }
 
 /// One group: detect, then (within the law's range) the law; the step's statistics.
+/// The model as a kind runs it: a round contact (pair_kind.hpp) on the circle, without curvatures.
+ContactModel asRun(ContactModel model, PairKind kind) {
+  if (round(kind)) {
+    model.curvatures = false;
+    model.tangential.elliptic = false;
+  }
+  return model;
+}
+
 template <PairKind Kind, NormalLawComponent Law>
-void runGroup(const std::vector<std::uint32_t>& members, const ContactModel& model, const Law& law,
+void runGroup(const std::vector<std::uint32_t>& members, const ContactModel& pairModel, const Law& law,
               const InteractionScene& scene, ContactStore& s, ContactStatistics& statistics) {
+  const ContactModel model = asRun(pairModel, Kind);
   long long calls = 0, iterations = 0, failures = 0, deep = 0, lost = 0, invalid = 0;
   long long byStatus[contactStatusCount] = {};
   const auto count = static_cast<std::ptrdiff_t>(members.size());
@@ -115,7 +125,7 @@ void runGroup(const std::vector<std::uint32_t>& members, const ContactModel& mod
     s.acting[k] = force.acting;
     s.force[k] = force.onB;
     s.load[k] = {force.normal, force.normalDamping, force.normalStiffness, force.area};
-    if constexpr (Kind != PairKind::ParticleWall) {
+    if constexpr (Kind != PairKind::ParticleWall && Kind != PairKind::SphereWall) {
       ++calls;
       iterations += g.iterations;
     }
@@ -143,6 +153,7 @@ void runGroup(PairKind kind, const std::vector<std::uint32_t>& members, const Co
     case PairKind::EllipsoidPair: return runGroup<PairKind::EllipsoidPair>(members, model, law, scene, s, statistics);
     case PairKind::SuperquadricPair:
       return runGroup<PairKind::SuperquadricPair>(members, model, law, scene, s, statistics);
+    case PairKind::SphereWall: return runGroup<PairKind::SphereWall>(members, model, law, scene, s, statistics);
     case PairKind::ParticleWall: return runGroup<PairKind::ParticleWall>(members, model, law, scene, s, statistics);
   }
 }

@@ -17,7 +17,7 @@ std::uint32_t modelIndex(const InteractionScene& scene, const ContactStore& s, s
 
 PairKind kindOf(const InteractionScene& scene, const ContactStore& s, std::size_t k) {
   const Superquadric& A = scene.shapes[scene.particles.shape[s.a[k]]];
-  return s.onWall(k) ? PairKind::ParticleWall : pairKind(A, scene.shapes[scene.particles.shape[s.b[k]]]);
+  return s.onWall(k) ? wallPairKind(A) : pairKind(A, scene.shapes[scene.particles.shape[s.b[k]]]);
 }
 
 bool anyRolling(const InteractionScene& scene) {

@@ -10,17 +10,24 @@
 namespace sqdem {
 
 enum class PairKind : std::uint8_t {
-  SphereSphere,      ///< closed form
+  SphereSphere,      ///< closed form; a round contact (below)
+  SphereWall,        ///< closed form; a round contact
   EllipsoidPair,     ///< common-normal solve on gauges without powers (n1 = n2 = 2)
   SuperquadricPair,  ///< common-normal solve, general exponents
   ParticleWall,      ///< closed form through the support map
 };
-inline constexpr int pairKindCount = static_cast<int>(PairKind::ParticleWall) + 1;
+
+/// Two spheres, or a sphere and a plane: both relative radii are R* = rA rB / (rA + rB) (r on a
+/// plane) and the contact is a circle, so the curvature-exact law is exactly the law on the
+/// volume-equivalent spheres (the radius cap, capFactor sqrt(rA rB) > R*, never binds) and
+/// elliptic Mindlin is circular Mindlin: no curvatures are computed.
+constexpr bool round(PairKind kind) { return kind == PairKind::SphereSphere || kind == PairKind::SphereWall; }
 
 inline PairKind pairKind(const Superquadric& A, const Superquadric& B) {
   if (A.isSphere() && B.isSphere()) return PairKind::SphereSphere;
   if (A.isEllipsoid() && B.isEllipsoid()) return PairKind::EllipsoidPair;
   return PairKind::SuperquadricPair;
 }
+inline PairKind wallPairKind(const Superquadric& A) { return A.isSphere() ? PairKind::SphereWall : PairKind::ParticleWall; }
 
 }  // namespace sqdem
