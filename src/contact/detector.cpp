@@ -12,7 +12,6 @@
 namespace sqdem {
 namespace {
 
-using Vec4 = Eigen::Vector4d;
 using Mat4 = Eigen::Matrix4d;
 
 /// The pair seen from A's body frame: B's rotation R (B body -> A body) and centre c.
@@ -173,6 +172,12 @@ Vec4 dampedStep(const Iterate& it, double damping) {
 Vec2 capped(const Vec2& step, double maxLength) {
   const double n = step.norm();
   return n > maxLength ? Vec2(step * (maxLength / n)) : step;
+}
+
+/// Principal curvatures (world frame) of a body at a point of its surface (body frame).
+PrincipalCurvatures curvaturesAt(const Superquadric& s, const Pose& pose, const Vec3& localPoint) {
+  const GaugeDerivatives d = s.derivatives(localPoint);
+  return principalCurvatures(d.gradient, d.hessian).rotated(pose.rotation());
 }
 
 /// Packs a solved pair (points in A's body frame) into world-frame ContactGeometry.
@@ -452,12 +457,19 @@ ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const Pl
   g.normal = n;
   g.pointB = g.pointA + g.overlap * wall.normal;
   g.localPointB = g.pointB;  // the wall's frame is the world frame
-  if (settings.curvatures) {
-    const GaugeDerivatives d = A.derivatives(g.localPointA);
-    g.curvatureA = principalCurvatures(d.gradient, d.hessian).rotated(RA);
-  }
+  if (settings.curvatures) g.curvatureA = curvaturesAt(A, poseA, g.localPointA);
   g.curvatureB = PrincipalCurvatures::flat(wall.normal);
   return g;
+}
+
+void addCurvatures(ContactGeometry& g, const Superquadric& A, const Pose& poseA, const Superquadric& B,
+                   const Pose& poseB) {
+  g.curvatureA = curvaturesAt(A, poseA, g.localPointA);
+  g.curvatureB = curvaturesAt(B, poseB, g.localPointB);
+}
+
+void addCurvatures(ContactGeometry& g, const Superquadric& A, const Pose& poseA) {
+  g.curvatureA = curvaturesAt(A, poseA, g.localPointA);
 }
 
 }  // namespace sqdem

@@ -11,11 +11,17 @@ namespace sqdem::detail {
 
 /// What the normal law sees of the contact: relative radii and factors from the curvatures, or
 /// the volume-equivalent spheres' circle (Ri = Rj = R*, Rc = R*/2).
-inline NormalContact normalContact(const ContactModel& model, const ContactGeometry& geometry,
-                                   const ContactKinematics& motion) {
+/// E* and r_IJ of the contact (radii and factors left to the caller).
+inline NormalContact sizedContact(const ContactModel& model, const ContactKinematics& motion) {
   NormalContact c;
   c.effectiveModulus = model.effectiveModulus;
   c.radiusSum = motion.volumeRadiusA + (motion.volumeRadiusB > 0.0 ? motion.volumeRadiusB : motion.volumeRadiusA);
+  return c;
+}
+
+inline NormalContact normalContact(const ContactModel& model, const ContactGeometry& geometry,
+                                   const ContactKinematics& motion) {
+  NormalContact c = sizedContact(model, motion);
   if (model.usesCurvatures()) {
     const double reference = motion.volumeRadiusB > 0.0 ? std::sqrt(motion.volumeRadiusA * motion.volumeRadiusB)
                                                         : motion.volumeRadiusA;
@@ -31,12 +37,23 @@ inline NormalContact normalContact(const ContactModel& model, const ContactGeome
   return c;
 }
 
+/// The law's view of a solved contact: its radii and factors, and the major axis when the
+/// tangential spring works on the ellipse.
+inline LawGeometry lawGeometry(const ContactModel& model, const ContactGeometry& geometry,
+                               const ContactKinematics& motion) {
+  LawGeometry g{geometry.overlap, geometry.normal, normalContact(model, geometry, motion), Vec3::Zero()};
+  if (model.tangential.elliptic && model.tangential.friction > 0.0) {
+    g.majorAxis = contactMajorAxis(geometry.curvatureA, geometry.curvatureB, geometry.normal);
+  }
+  return g;
+}
+
 template <NormalLawComponent Law>
-ContactForce contactForce(const ContactModel& model, const Law& law, const ContactGeometry& geometry,
+ContactForce contactForce(const ContactModel& model, const Law& law, const LawGeometry& geometry,
                           const ContactKinematics& motion, ContactHistory& history, double dt) {
   const double delta = geometry.overlap;
   const Vec3& n = geometry.normal;
-  const NormalContact c = normalContact(model, geometry, motion);
+  const NormalContact& c = geometry.contact;
   const NormalResponse r = normalResponse(law, c, delta, history.normal);
   if (!r.acting) {  // the law keeps its own record; the tangential and rolling springs end
     history.spring.setZero();
@@ -57,8 +74,8 @@ ContactForce contactForce(const ContactModel& model, const Law& law, const Conta
   const MindlinSpring& tangential = model.tangential;
   if (tangential.friction > 0.0) {
     const double limit = tangential.friction * (r.pullOff > 0.0 ? std::abs(Fn + 2.0 * r.pullOff) : std::max(Fn, 0.0));
-    out.onB += tangential.force(c, geometry.curvatureA, geometry.curvatureB, n, r.area, vt, limit, model.damping,
-                                motion.effectiveMass, history.spring, dt);
+    out.onB += tangential.force(c, geometry.majorAxis, n, r.area, vt, limit, model.damping, motion.effectiveMass,
+                                history.spring, dt);
   }
   if constexpr (std::is_same_v<Law, HaervigJkrLaw>) {
     if (model.rolling) {

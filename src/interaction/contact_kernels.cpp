@@ -13,15 +13,22 @@ namespace {
 
 Pose poseOf(const ParticleStore& p, std::uint32_t i) { return {p.position[i], p.orientation[i]}; }
 
-/// The pair kind's detector for contact k, warm-started from the store.
+/// Whether a group computes curvatures from a cache (curvature_cache.hpp) rather than every step.
+bool cachesCurvatures(const ContactModel& model, PairKind kind) {
+  return !round(kind) && model.usesCurvatures() && model.curvatureTolerance > 0.0;
+}
+
+/// The pair kind's detector for contact k, warm-started from the store; the curvatures only
+/// when asked for (a law that does not use them, or takes them from its cache, does not pay).
 template <PairKind Kind>
-ContactGeometry detect(const InteractionScene& scene, const ContactModel& model, ContactStore& s, std::uint32_t k) {
+ContactGeometry detect(const InteractionScene& scene, const ContactModel& model, ContactStore& s, std::uint32_t k,
+                       bool curvatures) {
   const ParticleStore& p = scene.particles;
   const std::uint32_t a = s.a[k], b = s.b[k];
   const Superquadric& A = scene.shapes[p.shape[a]];
   // Gaps within the skin are solved too (rough and adhesive contacts act across them, and every
-  // candidate is warm-started next step); a law that does not use curvatures does not pay for them.
-  const DetectorSettings settings{.cutoff = scene.skin, .curvatures = model.usesCurvatures()};
+  // candidate is warm-started next step).
+  const DetectorSettings settings{.cutoff = scene.skin, .curvatures = curvatures};
   if constexpr (Kind == PairKind::ParticleWall || Kind == PairKind::SphereWall) {
     return detectContact(A, poseOf(p, a), scene.walls[b & ~wallFlag].plane, settings);
   } else {
@@ -76,6 +83,40 @@ ContactKinematics kinematics(const InteractionScene& scene, const ContactStore& 
 }
 
 /// One group: detect, then (within the law's range) the law; the step's statistics.
+/// The law's view of contact k from its curvature cache while that holds; otherwise the
+/// curvatures at the new contact points are computed and the cache refreshed.
+template <PairKind Kind>
+LawGeometry cachedLawGeometry(const InteractionScene& scene, const ContactModel& model, ContactStore& s,
+                              std::uint32_t k, ContactGeometry& g, const ContactKinematics& motion, double cosHalfAngle) {
+  constexpr bool wall = Kind == PairKind::ParticleWall;
+  const ParticleStore& p = scene.particles;
+  const std::uint32_t a = s.a[k], b = s.b[k];
+  const Quat relative = wall ? p.orientation[a].conjugate() : Quat(p.orientation[a].conjugate() * p.orientation[b]);
+  const double reference = wall ? motion.volumeRadiusA : std::sqrt(motion.volumeRadiusA * motion.volumeRadiusB);
+  CurvatureCache& cache = s.curvatureCache[k];
+  const Mat3 RA = p.orientation[a].toRotationMatrix();
+  if (!cache.holds(g.localPointA, g.localPointB, relative, model.curvatureTolerance * reference, cosHalfAngle)) {
+    const Superquadric& A = scene.shapes[p.shape[a]];
+    if constexpr (wall) {
+      addCurvatures(g, A, poseOf(p, a));
+    } else {
+      addCurvatures(g, A, poseOf(p, a), scene.shapes[p.shape[b]], Pose{p.position[b] + s.shift[k], p.orientation[b]});
+    }
+    const LawGeometry fresh = detail::lawGeometry(model, g, motion);
+    cache = {g.localPointA, g.localPointB, relative.coeffs(), fresh.contact.radii, fresh.contact.factors,
+             RA.transpose() * fresh.majorAxis};
+    return fresh;
+  }
+  LawGeometry held{g.overlap, g.normal, detail::sizedContact(model, motion), Vec3::Zero()};
+  held.contact.radii = cache.radii;
+  held.contact.factors = cache.factors;
+  if (model.tangential.elliptic && model.tangential.friction > 0.0) {  // the held axis, in today's tangent plane
+    const Vec3 u = RA * cache.majorAxisA;
+    held.majorAxis = (u - u.dot(g.normal) * g.normal).normalized();
+  }
+  return held;
+}
+
 /// The model as a kind runs it: a round contact (pair_kind.hpp) on the circle, without curvatures.
 ContactModel asRun(ContactModel model, PairKind kind) {
   if (round(kind)) {
@@ -89,13 +130,15 @@ template <PairKind Kind, NormalLawComponent Law>
 void runGroup(const std::vector<std::uint32_t>& members, const ContactModel& pairModel, const Law& law,
               const InteractionScene& scene, ContactStore& s, ContactStatistics& statistics) {
   const ContactModel model = asRun(pairModel, Kind);
+  const bool cached = cachesCurvatures(model, Kind);
+  const double cosHalfAngle = std::cos(0.5 * model.curvatureTolerance);
   long long calls = 0, iterations = 0, failures = 0, deep = 0, lost = 0, invalid = 0;
   long long byStatus[contactStatusCount] = {};
   const auto count = static_cast<std::ptrdiff_t>(members.size());
 #pragma omp parallel for schedule(dynamic, 64) reduction(+ : calls, iterations, failures, deep, lost, invalid, byStatus[:contactStatusCount])
   for (std::ptrdiff_t m = 0; m < count; ++m) {
     const std::uint32_t k = members[m];
-    const ContactGeometry g = detect<Kind>(scene, model, s, k);
+    ContactGeometry g = detect<Kind>(scene, model, s, k, model.usesCurvatures() && !cached);
     s.status[k] = g.status;
     s.localA[k] = g.localPointA;
     s.localB[k] = g.localPointB;
@@ -110,7 +153,14 @@ void runGroup(const std::vector<std::uint32_t>& members, const ContactModel& pai
     const double range = normalRange(law, history.normal);
     ContactForce force{.acting = false};
     if (g.converged() && g.overlap > -range) {
-      force = detail::contactForce(model, law, g, kinematics<Kind>(scene, s, k, s.point[k]), history, scene.dt);
+      const ContactKinematics motion = kinematics<Kind>(scene, s, k, s.point[k]);
+      if constexpr (Kind == PairKind::SphereSphere || Kind == PairKind::SphereWall) {
+        force = detail::contactForce(model, law, detail::lawGeometry(model, g, motion), motion, history, scene.dt);
+      } else {
+        const LawGeometry view = cached ? cachedLawGeometry<Kind>(scene, model, s, k, g, motion, cosHalfAngle)
+                                        : detail::lawGeometry(model, g, motion);
+        force = detail::contactForce(model, law, view, motion, history, scene.dt);
+      }
       invalid += !force.valid;
     } else {
       lost += std::isinf(range);  // an adhesive contact its law still held

@@ -6,7 +6,7 @@ namespace sqdem {
 
 ContactForce contactForce(const ContactModel& model, const ContactGeometry& geometry, const ContactKinematics& motion,
                           ContactHistory& history, double dt) {
-  return std::visit([&](const auto& law) { return detail::contactForce(model, law, geometry, motion, history, dt); },
+  return std::visit([&](const auto& law) { return detail::contactForce(model, law, detail::lawGeometry(model, geometry, motion), motion, history, dt); },
                     model.normal);
 }
 

@@ -1,7 +1,6 @@
 // Checkpoints of the contact store: every array raw (plain data), then on reading every count,
 // index, status and the key order checked before the store is replaced.
 
-#include <algorithm>
 #include <string>
 
 #include "sqdem/interaction/interactions.hpp"
@@ -17,7 +16,8 @@ void require(bool ok, const char* what) {
 }  // namespace
 
 void Interactions::writeState(CheckpointWriter& out) const {
-  out.put(store_.withRolling);
+  out.put(static_cast<std::uint8_t>(store_.withRolling));
+  out.put(static_cast<std::uint8_t>(store_.withCurvatureCache));
   ContactStore::forEachArray(store_, [&](const auto& array) { out.putVector(array); });
   out.putVector(interacting_);
 }
@@ -25,10 +25,13 @@ void Interactions::writeState(CheckpointWriter& out) const {
 Interactions Interactions::readState(CheckpointReader& in, const InteractionScene& scene) {
   Interactions out;
   ContactStore& s = out.store_;
-  in.get(s.withRolling);
-  require(s.withRolling == std::any_of(scene.models.begin(), scene.models.end(),
-                                       [](const ContactModel& m) { return m.rolling.has_value(); }),
-          "rolling resistance state");
+  const ContactStore expected = emptyStore(scene);
+  std::uint8_t rolling = 0, cache = 0;
+  in.get(rolling);
+  in.get(cache);
+  require(rolling == expected.withRolling && cache == expected.withCurvatureCache, "optional contact arrays");
+  s.withRolling = expected.withRolling;
+  s.withCurvatureCache = expected.withCurvatureCache;
   const std::uint64_t anyLength = ~std::uint64_t{0};  // bounded by the bytes left
   std::uint64_t count = 0;
   bool first = true;

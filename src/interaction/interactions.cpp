@@ -20,9 +20,18 @@ PairKind kindOf(const InteractionScene& scene, const ContactStore& s, std::size_
   return s.onWall(k) ? wallPairKind(A) : pairKind(A, scene.shapes[scene.particles.shape[s.b[k]]]);
 }
 
-bool anyRolling(const InteractionScene& scene) {
-  return std::any_of(scene.models.begin(), scene.models.end(), [](const ContactModel& m) { return m.rolling.has_value(); });
+}  // namespace
+
+ContactStore emptyStore(const InteractionScene& scene) {
+  ContactStore s;
+  for (const ContactModel& m : scene.models) {
+    s.withRolling = s.withRolling || m.rolling.has_value();
+    s.withCurvatureCache = s.withCurvatureCache || (m.usesCurvatures() && m.curvatureTolerance > 0.0);
+  }
+  return s;
 }
+
+namespace {
 
 }  // namespace
 
@@ -39,8 +48,7 @@ ContactStatistics& ContactStatistics::operator+=(const ContactStatistics& o) {
 
 void Interactions::setCandidates(const std::vector<CandidateKey>& candidates, const InteractionScene& scene) {
   if (candidates.size() >= bodyBFlag) throw std::length_error("Interactions: more than 2^31 candidate contacts");
-  ContactStore next;
-  next.withRolling = anyRolling(scene);
+  ContactStore next = emptyStore(scene);
   for (const CandidateKey& c : candidates) next.add(c.a, c.b, c.shift);
   // Carry the state of pairs that persist (both lists are sorted by key).
   std::size_t previous = 0;

@@ -8,8 +8,7 @@
 
 namespace sqdem {
 
-Vec3 MindlinSpring::force(const NormalContact& c, const PrincipalCurvatures& curvatureA,
-                          const PrincipalCurvatures& curvatureB, const Vec3& n, double area, const Vec3& vt,
+Vec3 MindlinSpring::force(const NormalContact& c, const Vec3& majorAxis, const Vec3& n, double area, const Vec3& vt,
                           double limit, const ViscousDamping& damping, double mass, Vec3& spring, double dt) const {
   keepInTangentPlane(spring, n);
   spring += vt * dt;
@@ -17,7 +16,7 @@ Vec3 MindlinSpring::force(const NormalContact& c, const PrincipalCurvatures& cur
   Vec3 u;
   double ku, kv;
   if (elliptic) {
-    u = contactMajorAxis(curvatureA, curvatureB, n);
+    u = majorAxis;
     const double scale = 8.0 * effectiveShear * contactSemiMajorAxis(area, c.factors.e2);
     const MindlinPhi phi = mindlinPhi(c.factors.K, c.factors.D, poissonRatio);
     ku = scale / phi.major;

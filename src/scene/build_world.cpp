@@ -164,6 +164,7 @@ World buildWorld(const Scene& scene) {
     model.tangential.elliptic = in.ellipticTangential;
     model.eccentricity = in.eccentricity;
     model.capFactor = in.capFactor;
+    model.curvatureTolerance = in.curvatureTolerance;
     if (in.restitution > 0.0) model.damping.ratio = restitutionDampingRatio(in.restitution);  // 0 for e = 1
     if (in.friction >= 0.0) model.tangential.friction = in.friction;
     // F_C and xi_crit of the rolling resistance use the real material.

@@ -38,7 +38,7 @@ std::uint64_t sceneFingerprint(const Scene& scene) {
   }
   for (const InteractionSpec& i : scene.interactions) {
     h.all(h.n(i.materialA), h.n(i.materialB), i.normalName, h.n(i.curvatures), h.n(i.ellipticTangential), h.n(i.eccentricity), i.capFactor,
-          i.restitution, i.friction, i.stiffnessScale, i.rollingHysteresis);
+          i.curvatureTolerance, i.restitution, i.friction, i.stiffnessScale, i.rollingHysteresis);
     for (const auto& [key, value] : i.lawParameters) h.all(key, value);
   }
   for (const WallSpec& w : scene.walls) h.all(w.point, w.normal, w.velocity, h.n(w.material));

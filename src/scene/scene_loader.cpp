@@ -349,8 +349,9 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
   for (std::size_t k = 0; k < interactions.size(); ++k) {
     const YAML::Node in = interactions[k];
     const std::string where = "interactions[" + std::to_string(k) + "]";
-    const std::vector<std::string_view> pairKeys{"materials", "normal",      "tangential",         "eccentricity", "cap_factor",
-                                                 "reduced_stiffness", "restitution", "rolling_hysteresis", "friction"};
+    const std::vector<std::string_view> pairKeys{"materials",         "normal",      "tangential",         "eccentricity",
+                                                 "cap_factor",        "curvature_tolerance", "reduced_stiffness",
+                                                 "restitution",       "rolling_hysteresis",  "friction"};
     r.uniqueKeys(in, where);
     const YAML::Node pair = in["materials"];
     if (!pair || !pair.IsSequence() || pair.size() != 2) r.fail(pair ? pair : in, where + ".materials", "must be a pair [material, material]");
@@ -361,6 +362,10 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
     declared[spec.materialA * nm + spec.materialB] = declared[spec.materialB * nm + spec.materialA] = true;
     spec.capFactor = r.number(in, "cap_factor", where, 10.0);
     if (!(spec.capFactor > 0.0)) r.fail(in["cap_factor"], where + ".cap_factor", "must be > 0");
+    spec.curvatureTolerance = r.number(in, "curvature_tolerance", where, InteractionSpec{}.curvatureTolerance);
+    if (!(spec.curvatureTolerance >= 0.0 && spec.curvatureTolerance <= 0.1)) {
+      r.fail(in["curvature_tolerance"], where + ".curvature_tolerance", "must be in [0, 0.1] (0: curvatures every step)");
+    }
     spec.stiffnessScale = r.number(in, "reduced_stiffness", where, 1.0);
     if (!(spec.stiffnessScale > 0.0 && spec.stiffnessScale <= 1.0)) r.fail(in["reduced_stiffness"], where + ".reduced_stiffness", "must be in (0, 1] (E_mod / E)");
     // The normal law (law_registry.hpp) reads its own keys.

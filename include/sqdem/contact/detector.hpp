@@ -57,4 +57,10 @@ ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const Su
 ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const Plane& wall,
                               const DetectorSettings& settings = {});
 
+/// Sets the principal curvatures of a solution found without them (settings.curvatures false)
+/// at its surface points localPointA and localPointB (body frames).
+void addCurvatures(ContactGeometry& g, const Superquadric& A, const Pose& poseA, const Superquadric& B, const Pose& poseB);
+/// The same for particle A against a wall (the wall's curvatures are already set: flat).
+void addCurvatures(ContactGeometry& g, const Superquadric& A, const Pose& poseA);
+
 }  // namespace sqdem

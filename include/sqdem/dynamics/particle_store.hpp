@@ -14,7 +14,6 @@
 
 namespace sqdem {
 
-using Vec4 = Eigen::Vector4d;
 
 struct ParticleStore {
   std::vector<std::uint32_t> id;

@@ -36,6 +36,10 @@ struct ContactModel {
   bool curvatures = true;          ///< the normal law works on the detector's curvatures
   EccentricityMethod eccentricity = EccentricityMethod::Tabulated;
   double capFactor = 10.0;         ///< relative radii capped at capFactor R_vol_ref
+  /// eps of curvature_cache.hpp: the law's curvature constants are re-evaluated when a contact
+  /// point has moved by eps R_vol_ref on its body or the bodies turned by eps rad against each
+  /// other since; 0: every step.
+  double curvatureTolerance = 0.0;
   double effectiveModulus = 0.0;   ///< E* (Pa), after any reduced stiffness
   ViscousDamping damping;          ///< normal and tangential
   MindlinSpring tangential;        ///< friction 0: none; on the circle without curvatures
@@ -67,6 +71,14 @@ struct ContactKinematics {
   double volumeRadiusB = 0.0;            ///< R_vol of B (m); 0 for a wall
   Vec3 angularVelocityA = Vec3::Zero();  ///< (rad/s)
   Vec3 angularVelocityB = Vec3::Zero();  ///< (rad/s), 0 for a wall
+};
+
+/// What the law reads of a solved contact (contact_force.hpp builds it from ContactGeometry).
+struct LawGeometry {
+  double overlap = 0.0;          ///< (m)
+  Vec3 normal = Vec3::UnitZ();   ///< unit, A to B
+  NormalContact contact;         ///< relative radii, elliptic factors, E*, r_IJ
+  Vec3 majorAxis = Vec3::Zero(); ///< unit major axis of the contact ellipse (elliptic Mindlin only)
 };
 
 struct ContactForce {

@@ -6,10 +6,12 @@
 //   warm start   status, both surface points in their body frames, the separation bound
 //   geometry     normal, overlap, contact point (the reduction's lever arm)
 //   histories    tangential spring, the normal law's record, the rolling displacement
+//   law cache    the curvature-derived law constants (curvature_cache.hpp)
 //   load         acting, force and moment on B, the normal force's parts and the area
-// The rolling displacement and the moment exist only in a store made withRolling (a scene
-// without rolling resistance stores neither). Curvatures are not stored: the fused kernels
-// hand them from the detector to the law within one contact.
+// The rolling displacement and the moment exist only in a store made withRolling, the law cache
+// only withCurvatureCache (a scene without rolling resistance or caching stores none of them).
+// Curvatures themselves are not stored: the fused kernels hand them from the detector to the
+// law within one contact.
 
 #include <cstdint>
 #include <tuple>
@@ -17,6 +19,7 @@
 
 #include "sqdem/contact/contact_geometry.hpp"
 #include "sqdem/dynamics/wall.hpp"
+#include "sqdem/interaction/curvature_cache.hpp"
 #include "sqdem/mechanics/normal_law.hpp"
 
 namespace sqdem {
@@ -45,6 +48,7 @@ struct ContactStore {
   std::vector<Vec3> spring;                ///< tangential spring (m)
   std::vector<NormalHistory> normalHistory;  ///< the normal law's record
   std::vector<Vec3> rolling;               ///< rolling displacement (m), withRolling only
+  std::vector<CurvatureCache> curvatureCache;  ///< withCurvatureCache only
 
   std::vector<std::uint8_t> acting;  ///< carried force in the last computation
   std::vector<Vec3> force;           ///< on B (N); A receives -force
@@ -52,6 +56,7 @@ struct ContactStore {
   std::vector<NormalLoad> load;
 
   bool withRolling = false;
+  bool withCurvatureCache = false;
 
   std::size_t size() const { return a.size(); }
   bool onWall(std::size_t k) const { return (b[k] & wallFlag) != 0; }
@@ -62,7 +67,7 @@ struct ContactStore {
   static constexpr auto stateArrays =
       std::tuple{&ContactStore::status, &ContactStore::localA, &ContactStore::localB, &ContactStore::separation,
                  &ContactStore::normal, &ContactStore::overlap, &ContactStore::point, &ContactStore::spring,
-                 &ContactStore::normalHistory, &ContactStore::rolling};
+                 &ContactStore::normalHistory, &ContactStore::rolling, &ContactStore::curvatureCache};
   /// Calls f(array) for every array, in a fixed order: the one list that checkpoints,
   /// re-ordering and resizing use, so a new field cannot be forgotten there.
   template <typename Store, typename F>
@@ -76,9 +81,11 @@ struct ContactStore {
     f(s.moment);
     f(s.load);
   }
-  /// Whether an array (one of this store's) is kept: all but rolling and moment, which only a
-  /// store withRolling keeps.
-  bool keeps(const void* array) const { return withRolling || (array != &rolling && array != &moment); }
+  /// Whether an array (one of this store's) is kept: all but the optional ones (above).
+  bool keeps(const void* array) const {
+    if (array == &rolling || array == &moment) return withRolling;
+    return array != &curvatureCache || withCurvatureCache;
+  }
 
   /// Appends a fresh candidate (no geometry, no history).
   void add(std::uint32_t bodyA, std::uint32_t bodyB, const Vec3& bShift);

@@ -61,6 +61,9 @@ struct CandidateKey {
   std::uint64_t key() const { return (std::uint64_t{a} << 32) | b; }
 };
 
+/// An empty store with the optional arrays the scene's contact models need.
+ContactStore emptyStore(const InteractionScene& scene);
+
 class Interactions {
  public:
   /// Replaces the candidates (sorted by key, unique), carrying over the geometry and histories

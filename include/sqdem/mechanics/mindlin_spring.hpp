@@ -10,7 +10,6 @@
 // Damping per axis: ViscousDamping with k_u, k_v. The partial-slip softening of 004 Eqs. 59-67
 // is not applied: the spring is linear up to the Coulomb limit. History: the spring (m).
 
-#include "sqdem/geometry/curvature.hpp"
 #include "sqdem/mechanics/damping.hpp"
 #include "sqdem/mechanics/normal_law.hpp"
 
@@ -22,12 +21,11 @@ struct MindlinSpring {
   double poissonRatio = 0.0;    ///< nu of Eq. 57, the mean of the two materials' (-)
   double friction = 0.0;        ///< mu (-); 0: no tangential force
 
-  /// Force on B at a contact of area A (m^2) with the normal n (A to B) and the surfaces'
-  /// curvatures; vt the tangential velocity of B relative to A (m/s), mass m* (kg), step dt (s).
-  /// Updates the spring.
-  Vec3 force(const NormalContact& c, const PrincipalCurvatures& curvatureA, const PrincipalCurvatures& curvatureB,
-             const Vec3& n, double area, const Vec3& vt, double limit, const ViscousDamping& damping, double mass,
-             Vec3& spring, double dt) const;
+  /// Force on B at a contact of area A (m^2) with the normal n (A to B) and, if elliptic, the
+  /// contact ellipse's major axis u (unit, normal to n: contactMajorAxis of elliptic.hpp); vt the
+  /// tangential velocity of B relative to A (m/s), mass m* (kg), step dt (s). Updates the spring.
+  Vec3 force(const NormalContact& c, const Vec3& majorAxis, const Vec3& n, double area, const Vec3& vt, double limit,
+             const ViscousDamping& damping, double mass, Vec3& spring, double dt) const;
 };
 
 }  // namespace sqdem
