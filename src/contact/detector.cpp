@@ -7,50 +7,23 @@
 #include <optional>
 #include <vector>
 
+#include "pair_surfaces.hpp"
 #include "sqdem/geometry/oriented_box.hpp"
 
 namespace sqdem {
 namespace {
 
 using Mat4 = Eigen::Matrix4d;
-
-/// The pair seen from A's body frame: B's rotation R (B body -> A body) and centre c.
-struct PairFrame {
-  const Superquadric& A;
-  const Superquadric& B;
-  Mat3 R;
-  Vec3 c;
-  double lengthScale;
-
-  Vec3 toB(const Vec3& p) const { return R.transpose() * (p - c); }
-  Vec3 fromB(const Vec3& x) const { return c + R * x; }
-};
-
-/// Surface data at a point, in A's body frame.
-struct SurfacePoint {
-  Vec3 point, gradient, normal;
-  double gradientNorm = 0.0;
-  Mat3 hessian;
-};
-
-SurfacePoint surfaceOfA(const PairFrame& f, const Vec3& p) {
-  const GaugeDerivatives d = f.A.derivatives(p);
-  const double gn = d.gradient.norm();
-  return {p, d.gradient, d.gradient / gn, gn, d.hessian};
-}
-
-SurfacePoint surfaceOfB(const PairFrame& f, const Vec3& p) {
-  const GaugeDerivatives d = f.B.derivatives(f.toB(p));
-  const Vec3 g = f.R * d.gradient;
-  const double gn = g.norm();
-  return {p, g, g / gn, gn, f.R * d.hessian * f.R.transpose()};
-}
+using detail::EllipsoidSurfaces;
+using detail::PairFrame;
+using detail::SuperquadricSurfaces;
 
 /// One evaluation of the common-normal residual (see detector.hpp); its Jacobian is computed
 /// only when a Newton step is taken from it (withJacobian): a warm solve's last evaluation
 /// passes the tolerance and needs none.
+template <class Surfaces>
 struct Iterate {
-  SurfacePoint a, b;
+  typename Surfaces::Point a, b;
   Vec3 t1, t2;    // tangent basis at A
   Vec3 tb1, tb2;  // tangent basis at B, aligned with (t1, t2) when nB = -nA
   Vec4 r;
@@ -60,10 +33,11 @@ struct Iterate {
   bool finite = false;
 };
 
-Iterate evaluate(const PairFrame& f, const Vec3& pA, const Vec3& pB) {
-  Iterate it;
-  it.a = surfaceOfA(f, pA);
-  it.b = surfaceOfB(f, pB);
+template <class Surfaces>
+Iterate<Surfaces> evaluate(const PairFrame& f, const Surfaces& surfaces, const Vec3& pA, const Vec3& pB) {
+  Iterate<Surfaces> it;
+  it.a = surfaces.onA(pA);
+  it.b = surfaces.onB(pB);
   const Vec3& nA = it.a.normal;
   const Vec3& nB = it.b.normal;
   tangentBasis(nA, it.t1, it.t2);
@@ -82,12 +56,13 @@ Iterate evaluate(const PairFrame& f, const Vec3& pA, const Vec3& pB) {
   it.lengthScale = L;
   it.r << L * it.t1.dot(normalSum), L * it.t2.dot(normalSum), it.t1.dot(gap), it.t2.dot(gap);
   it.norm = it.r.norm();
-  it.finite = it.r.allFinite() && it.a.hessian.allFinite() && it.b.hessian.allFinite();
+  it.finite = it.r.allFinite() && surfaces.finite(it.a) && surfaces.finite(it.b);
   return it;
 }
 
 /// Sets it.J; it.finite becomes false if J is not finite.
-void withJacobian(Iterate& it) {
+template <class Surfaces>
+void withJacobian(const Surfaces& surfaces, Iterate<Surfaces>& it) {
   const double L = it.lengthScale;
   const Vec3& nB = it.b.normal;
   const Vec3 tA[2] = {it.t1, it.t2};
@@ -95,8 +70,8 @@ void withJacobian(Iterate& it) {
   for (int i = 0; i < 2; ++i) {
     const Vec3 tiOnB = tA[i] - nB * nB.dot(tA[i]);  // P_B t_i
     for (int j = 0; j < 2; ++j) {
-      const double kA = tA[i].dot(it.a.hessian * tA[j]) / it.a.gradientNorm;  // shape operator of A
-      const double kB = tiOnB.dot(it.b.hessian * tB[j]) / it.b.gradientNorm;  // shape operator of B
+      const double kA = surfaces.shapeForm(it.a, tA[i], tA[j]);  // shape operator of A
+      const double kB = surfaces.shapeForm(it.b, tiOnB, tB[j]);  // shape operator of B
       it.J(i, j) = L * kA;
       it.J(i, j + 2) = L * kB;
       // d(t_i.(pB - pA)): -t_i.t_j from moving pA, overlap*kA from the basis turning with nA.
@@ -154,7 +129,8 @@ SupportPair minimiseSupportGap(const PairFrame& f, const Vec3& startNormal,
 /// The undamped step of a well-conditioned J (the common case) uses the cheaper partially
 /// pivoted LU, which gives the same solution; "well-conditioned" is judged by the ratio of the
 /// smallest to the largest pivot (cheap; Eigen's rcond() estimate cost as much as the solve).
-Vec4 dampedStep(const Iterate& it, double damping) {
+template <class Surfaces>
+Vec4 dampedStep(const Iterate<Surfaces>& it, double damping) {
   if (damping == 0.0) {
     const Eigen::PartialPivLU<Mat4> lu(it.J);
     const Vec4 pivots = lu.matrixLU().diagonal().cwiseAbs();
@@ -181,8 +157,9 @@ PrincipalCurvatures curvaturesAt(const Superquadric& s, const Pose& pose, const 
 }
 
 /// Packs a solved pair (points in A's body frame) into world-frame ContactGeometry.
-ContactGeometry finish(const PairFrame& f, const Pose& poseA, const Iterate& it, ContactStatus status, int iterations,
-                       bool curvatures) {
+template <class Surfaces>
+ContactGeometry finish(const PairFrame& f, const Surfaces& surfaces, const Pose& poseA, const Iterate<Surfaces>& it,
+                       ContactStatus status, int iterations, bool curvatures) {
   ContactGeometry g;
   g.status = status;
   const Mat3 RA = poseA.rotation();
@@ -193,8 +170,8 @@ ContactGeometry finish(const PairFrame& f, const Pose& poseA, const Iterate& it,
   g.normal = RA * it.a.normal;
   g.overlap = -(it.b.point - it.a.point).dot(it.a.normal);
   if (curvatures) {
-    g.curvatureA = principalCurvatures(it.a.gradient, it.a.hessian).rotated(RA);
-    g.curvatureB = principalCurvatures(it.b.gradient, it.b.hessian).rotated(RA);
+    g.curvatureA = surfaces.curvatures(it.a).rotated(RA);
+    g.curvatureB = surfaces.curvatures(it.b).rotated(RA);
   }
   g.iterations = iterations;
   g.residual = it.norm;
@@ -240,15 +217,13 @@ ContactGeometry sphereSphere(const Superquadric& A, const Pose& poseA, const Sup
 
 /// Safeguarded Gauss-Newton on the common-normal residual from surface points pA, pB (A's frame),
 /// with its own budget of settings.maxIterations; earlierIterations are added to the count.
-ContactGeometry newtonSolve(const PairFrame& f, const Pose& poseA, const Vec3& pA, const Vec3& pB,
-                            int earlierIterations, const DetectorSettings& settings) {
-  const Superquadric& A = f.A;
-  const Superquadric& B = f.B;
-
+template <class Surfaces>
+ContactGeometry newtonSolve(const PairFrame& f, const Surfaces& surfaces, const Pose& poseA, const Vec3& pA,
+                            const Vec3& pB, int earlierIterations, const DetectorSettings& settings) {
   const double tolerance = settings.tolerance * f.lengthScale;
-  const double maxStepA = 0.5 * A.halfExtents().minCoeff();
-  const double maxStepB = 0.5 * B.halfExtents().minCoeff();
-  Iterate current = evaluate(f, pA, pB);
+  const double maxStepA = 0.5 * f.A.halfExtents().minCoeff();
+  const double maxStepB = 0.5 * f.B.halfExtents().minCoeff();
+  Iterate<Surfaces> current = evaluate(f, surfaces, pA, pB);
   ContactStatus status = ContactStatus::Converged;
   // Safeguarded Gauss-Newton: the full step, then halved steps (nearly singular, flat
   // directions overshoot), then Levenberg-Marquardt steps of growing damping (far from the
@@ -273,7 +248,7 @@ ContactGeometry newtonSolve(const PairFrame& f, const Pose& poseA, const Vec3& p
       break;
     }
     if (attempt == 0) {
-      withJacobian(current);
+      withJacobian(surfaces, current);
       if (!current.finite) {
         status = ContactStatus::NonFinite;
         break;
@@ -286,7 +261,7 @@ ContactGeometry newtonSolve(const PairFrame& f, const Pose& poseA, const Vec3& p
     const Vec2 stepB = capped(step.tail<2>(), maxStepB);
     const Vec3 yA = current.a.point + stepA.x() * current.t1 + stepA.y() * current.t2;
     const Vec3 yB = current.b.point + stepB.x() * current.tb1 + stepB.y() * current.tb2;
-    const Iterate trial = evaluate(f, A.projectRadially(yA), f.fromB(B.projectRadially(f.toB(yB))));
+    const Iterate<Surfaces> trial = evaluate(f, surfaces, surfaces.projectOnA(yA), surfaces.projectOnB(yB));
     ++iterations;
     if (trial.finite && trial.norm < current.norm) {
       current = trial;
@@ -301,7 +276,7 @@ ContactGeometry newtonSolve(const PairFrame& f, const Pose& poseA, const Vec3& p
     g.iterations = earlierIterations + iterations;
     return g;
   }
-  ContactGeometry g = finish(f, poseA, current, status, earlierIterations + iterations, settings.curvatures);
+  ContactGeometry g = finish(f, surfaces, poseA, current, status, earlierIterations + iterations, settings.curvatures);
   if (g.converged()) {
     const bool antiparallel = current.a.normal.dot(current.b.normal) < 0.0;
     const bool facesB = current.a.normal.dot(f.c) >= 0.0;
@@ -364,8 +339,9 @@ bool degenerate(const PairFrame& f) {
 
 /// Cold solve from startNormal: support-gap descent then Newton; a longer descent; then the
 /// global stage (descents from the best-ranked starting directions, each polished by Newton).
-ContactGeometry coldSolve(const PairFrame& f, const Pose& poseA, const Vec3& startNormal, int earlierIterations,
-                          const DetectorSettings& settings) {
+template <class Surfaces>
+ContactGeometry coldSolve(const PairFrame& f, const Surfaces& surfaces, const Pose& poseA, const Vec3& startNormal,
+                          int earlierIterations, const DetectorSettings& settings) {
   if (degenerate(f)) {
     int iterations = earlierIterations;
     const SupportPair depth = globalSupportMinimum(f, iterations);
@@ -381,12 +357,12 @@ ContactGeometry coldSolve(const PairFrame& f, const Pose& poseA, const Vec3& sta
     return g;
   }
   const SupportPair guess = minimiseSupportGap(f, startNormal);
-  ContactGeometry g = newtonSolve(f, poseA, guess.pointA, guess.pointB, earlierIterations + guess.iterations, settings);
+  ContactGeometry g = newtonSolve(f, surfaces, poseA, guess.pointA, guess.pointB, earlierIterations + guess.iterations, settings);
   if (settled(g)) return g;
   // Deep overlaps: the Newton basin is narrower, so descend the support gap much further (its
   // minimum is itself a common-normal pair) before the second Newton attempt.
   const SupportPair closer = minimiseSupportGap(f, guess.normal, 1e-7, 400);
-  g = newtonSolve(f, poseA, closer.pointA, closer.pointB, g.iterations + closer.iterations, settings);
+  g = newtonSolve(f, surfaces, poseA, closer.pointA, closer.pointB, g.iterations + closer.iterations, settings);
   if (settled(g)) return g;
   // Global stage: a start in another basin (elongated or blocky bodies whose line of centres
   // points far from the least-penetration normal).
@@ -394,10 +370,29 @@ ContactGeometry coldSolve(const PairFrame& f, const Pose& poseA, const Vec3& sta
   const std::vector<SupportPair> starts = rankedStarts(f);
   for (int k = 0; k < globalStarts && k < static_cast<int>(starts.size()); ++k) {
     const SupportPair s = minimiseSupportGap(f, starts[k].normal, 1e-7, 400);
-    g = newtonSolve(f, poseA, s.pointA, s.pointB, g.iterations + s.iterations, settings);
+    g = newtonSolve(f, surfaces, poseA, s.pointA, s.pointB, g.iterations + s.iterations, settings);
     if (settled(g)) return g;
   }
   return g;
+}
+
+/// Warm solve from the previous points, or cold, of a pair that passed the culls.
+template <class Surfaces>
+ContactGeometry solvePair(const PairFrame& f, const Pose& poseA, const DetectorSettings& settings,
+                          const ContactGeometry* previous) {
+  const Surfaces surfaces(f);
+  if (previous != nullptr && previous->converged()) {
+    // Warm: Newton from the previous points; if that does not settle quickly (a contact that
+    // jumps across a flat face), a cold solve from the previous normal instead.
+    DetectorSettings quick = settings;
+    quick.maxIterations = std::min(settings.maxIterations, warmIterationBudget);
+    const ContactGeometry g =
+        newtonSolve(f, surfaces, poseA, previous->localPointA, f.fromB(previous->localPointB), 0, quick);
+    if (settled(g)) return g;
+    return coldSolve(f, surfaces, poseA, f.A.outwardNormal(previous->localPointA), g.iterations, settings);
+  }
+  const double distance = f.c.norm();
+  return coldSolve(f, surfaces, poseA, distance > 0.0 ? Vec3(f.c / distance) : Vec3::UnitX(), 0, settings);
 }
 
 ContactGeometry solve(const Superquadric& A, const Pose& poseA, const Superquadric& B,
@@ -408,27 +403,15 @@ ContactGeometry solve(const Superquadric& A, const Pose& poseA, const Superquadr
   const Vec3 centres = poseB.position - poseA.position;
   const double sphereGap = centres.norm() - A.boundingRadius() - B.boundingRadius();
   if (sphereGap > settings.cutoff) return separated(sphereGap);
-  const OrientedBox boxA{poseA.position, poseA.rotation(), A.halfExtents()};
-  const OrientedBox boxB{poseB.position, poseB.rotation(), B.halfExtents()};
+  const Mat3 RA = poseA.rotation(), RB = poseB.rotation();
+  const OrientedBox boxA{poseA.position, RA, A.halfExtents()};
+  const OrientedBox boxB{poseB.position, RB, B.halfExtents()};
   if (!boxesOverlap(boxA, boxB, 0.5 * settings.cutoff)) {
     return separated(std::max(sphereGap, settings.cutoff));
   }
-
-  const Mat3 RAt = poseA.rotation().transpose();
-  const PairFrame f{A, B, RAt * poseB.rotation(), RAt * centres,
-                    referenceVolumeRadius(A, B)};
-
-  if (previous != nullptr && previous->converged()) {
-    // Warm: Newton from the previous points; if that does not settle quickly (a contact that
-    // jumps across a flat face), a cold solve from the previous normal instead.
-    DetectorSettings quick = settings;
-    quick.maxIterations = std::min(settings.maxIterations, warmIterationBudget);
-    const ContactGeometry g = newtonSolve(f, poseA, previous->localPointA, f.fromB(previous->localPointB), 0, quick);
-    if (settled(g)) return g;
-    return coldSolve(f, poseA, A.outwardNormal(previous->localPointA), g.iterations, settings);
-  }
-  const double distance = f.c.norm();
-  return coldSolve(f, poseA, distance > 0.0 ? Vec3(f.c / distance) : Vec3::UnitX(), 0, settings);
+  const PairFrame f{A, B, RA.transpose() * RB, RA.transpose() * centres, referenceVolumeRadius(A, B)};
+  if (A.isEllipsoid() && B.isEllipsoid()) return solvePair<EllipsoidSurfaces>(f, poseA, settings, previous);
+  return solvePair<SuperquadricSurfaces>(f, poseA, settings, previous);
 }
 
 }  // namespace
