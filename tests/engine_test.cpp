@@ -52,7 +52,6 @@ stages:
 /// the pour gentle; the drag stays on.
 World pouredBed(const Scene& scene, double drag, int steps) {
   World world = buildWorld(scene);
-  world.setGravity(scene.gravity);
   world.setViscousDamping(drag);
   for (int s = 0; s < steps; ++s) world.step();
   return world;
@@ -376,13 +375,15 @@ TEST(Engine, SceneErrorsNameLineKeyAndWhatIsAllowed) {
                    "'interactions[0]': becker_kamlah needs yield_strength (Pa): give it here or in both materials");
   expectSceneError(withInteraction("    lambda_max: 2.5\n"),
                    "'interactions[0].lambda_max': unknown key (allowed: materials, normal, tangential, eccentricity, cap_factor, "
-                   "reduced_stiffness, restitution, rolling_hysteresis, friction, and for elliptic_hertz: roughness); "
+                   "curvature_tolerance, reduced_stiffness, restitution, rolling_hysteresis, friction, and for elliptic_hertz: roughness); "
                    "'lambda_max' is a key of normal: becker_kamlah");
   expectSceneError(withInteraction("    roughness: {sigma: 1.0e-6}\n"), "'interactions[0].roughness.asperity_count': missing");
+  expectSceneError(withInteraction("    curvature_tolerance: 0.5\n"),
+                   "'interactions[0].curvature_tolerance': must be in [0, 0.1] (0: curvatures every step)");
   expectSceneError(withInteraction("    normal: nan_adhesive\n    roughness: {sigma: 1.0e-6, asperity_count: 10}\n"
                                    "    surface_energy: 0.1\n    yield_pressure: 1.0e6\n"),
                    "'interactions[0].roughness': unknown key (allowed: materials, normal, tangential, eccentricity, cap_factor, "
-                   "reduced_stiffness, restitution, rolling_hysteresis, friction, and for nan_adhesive: surface_energy, "
+                   "curvature_tolerance, reduced_stiffness, restitution, rolling_hysteresis, friction, and for nan_adhesive: surface_energy, "
                    "yield_pressure, elastic_stiffness, plastic_stiffness); 'roughness' is a key of normal: elliptic_hertz, "
                    "volume_sphere_hertz, elliptic_jkr (Greenwood-Williamson roughness is built on elastic asperities");
   expectSceneError(withInteraction("    normal: jamari\n    hardness: 1.0e6\n    surface_energy: 0.1\n"),

@@ -111,7 +111,6 @@ void printSummary(const World& world, const RunReport& report, double wall, cons
 int runScene(const std::string& scenePath, fs::path outDir, int threads, const std::string& resume, bool overwrite) {
   const Scene scene = loadScene(scenePath);  // everything is validated before anything runs
   World world = buildWorld(scene);
-  world.setGravity(scene.gravity);
   const RunPlan plan = planRun(scene, world);
   const double dt = world.timeStep();
   RunProgress start;

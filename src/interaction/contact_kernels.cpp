@@ -28,7 +28,7 @@ ContactGeometry detect(const InteractionScene& scene, const ContactModel& model,
   const Superquadric& A = scene.shapes[p.shape[a]];
   // Gaps within the skin are solved too (rough and adhesive contacts act across them, and every
   // candidate is warm-started next step).
-  const DetectorSettings settings{.cutoff = scene.skin, .curvatures = curvatures};
+  const DetectorSettings settings{.cutoff = scene.skin, .tolerance = scene.detector.tolerance, .curvatures = curvatures};
   if constexpr (Kind == PairKind::ParticleWall || Kind == PairKind::SphereWall) {
     return detectContact(A, poseOf(p, a), scene.walls[b & ~wallFlag].plane, settings);
   } else {
@@ -45,7 +45,7 @@ ContactGeometry detect(const InteractionScene& scene, const ContactModel& model,
         if (s.separation[k] > model.reach) return ContactGeometry{};  // Separated, no iterations
       }
       ContactGeometry g;
-      if (s.status[k] == ContactStatus::Converged) {
+      if (s.status[k] == ContactStatus::Converged && scene.detector.warmStart) {
         ContactGeometry previous;
         previous.status = ContactStatus::Converged;
         previous.localPointA = s.localA[k];

@@ -62,6 +62,18 @@ void Interactions::setCandidates(const std::vector<CandidateKey>& candidates, co
   indexInvolvement(scene.particles.size());
 }
 
+void Interactions::fitStore(const InteractionScene& scene) {
+  const ContactStore wanted = emptyStore(scene);
+  if (wanted.withRolling == store_.withRolling && wanted.withCurvatureCache == store_.withCurvatureCache) return;
+  ContactStore fitted = wanted;
+  for (std::size_t k = 0; k < store_.size(); ++k) {
+    fitted.add(store_.a[k], store_.b[k], store_.shift[k]);
+    fitted.carryOver(k, store_, k);
+  }
+  store_ = std::move(fitted);
+  interacting_.clear();
+}
+
 void Interactions::regroup(const InteractionScene& scene) {
   std::map<std::pair<PairKind, std::uint32_t>, std::vector<std::uint32_t>> members;
   for (std::uint32_t k = 0; k < store_.size(); ++k) members[{kindOf(scene, store_, k), modelIndex(scene, store_, k)}].push_back(k);

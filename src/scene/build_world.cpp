@@ -198,6 +198,7 @@ World buildWorld(const Scene& scene) {
     world.particles().setAngularVelocity(i, scene.particles[i].angularVelocity);
   }
   refuseOverlaps(scene, world);
+  world.setGravity(scene.gravity);
   world.setTimeStep(scene.timeStep ? *scene.timeStep : automaticTimeStep(scene, world, scene.timeStepFraction));
   return world;
 }

@@ -49,6 +49,7 @@ void World::setContactModel(std::uint32_t ma, std::uint32_t mb, const ContactMod
   m.tangential.elliptic = m.tangential.elliptic && m.curvatures;  // the ellipse needs the curvatures
   models_.at(ma * n + mb) = models_.at(mb * n + ma) = m;
   modelSet_[ma * n + mb] = modelSet_[mb * n + ma] = true;
+  interactions_.fitStore(interactionScene());
 }
 
 std::size_t World::addParticle(std::uint32_t shape, std::uint32_t material, const Vec3& centre, const Quat& q) {

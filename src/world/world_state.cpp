@@ -67,7 +67,7 @@ void World::readState(CheckpointReader& in) {
   }
   for (const Wall& w : wallRecords) require(w.material < materials_.size(), "wall material index");
   Interactions interactions = Interactions::readState(
-      in, {restored, shapes_, boundingRadius, wallRecords, models_, materials_.size(), neighbours_.skin(), dt_});
+      in, {restored, shapes_, boundingRadius, wallRecords, models_, materials_.size(), neighbours_.skin(), dt_, detector_});
   in.getVector(reference, n);
   in.getVector(candidates, anyLength);
   in.get(builds);

@@ -13,6 +13,7 @@
 #include <ranges>
 #include <vector>
 
+#include "sqdem/contact/detector.hpp"
 #include "sqdem/dynamics/particle_store.hpp"
 #include "sqdem/dynamics/wall.hpp"
 #include "sqdem/geometry/superquadric.hpp"
@@ -41,6 +42,12 @@ struct ContactStatistics {
   ContactStatistics& operator+=(const ContactStatistics& o);
 };
 
+/// The accuracy knobs of the common-normal detector (an engine-wide choice).
+struct DetectorControl {
+  double tolerance = DetectorSettings{}.tolerance;  ///< DetectorSettings::tolerance (-)
+  bool warmStart = true;  ///< start from the last solution; false: every solve is cold
+};
+
 /// What the kernels read of the world (all unchanged during a force computation).
 struct InteractionScene {
   const ParticleStore& particles;
@@ -52,6 +59,7 @@ struct InteractionScene {
   std::size_t materialCount = 0;
   double skin = 0.0;  ///< detector cut-off (m): gaps within it are solved, for warm starts
   double dt = 0.0;    ///< time step (s)
+  DetectorControl detector;
 };
 
 /// A candidate pair for Interactions::setCandidates: b a particle slot or wallFlag | wall.
@@ -69,6 +77,9 @@ class Interactions {
   /// Replaces the candidates (sorted by key, unique), carrying over the geometry and histories
   /// of pairs that persist, and regroups them.
   void setCandidates(const std::vector<CandidateKey>& candidates, const InteractionScene& scene);
+  /// Keeps the store's optional arrays (rolling, curvature cache) to what the scene's contact
+  /// models need, after a model changed: arrays added fresh, arrays no longer needed dropped.
+  void fitStore(const InteractionScene& scene);
   /// Detection and laws of every candidate; adds to the statistics.
   void compute(const InteractionScene& scene, ContactStatistics& statistics);
   /// Per particle: F = m (g - c v) plus its contacts' loads, and the torques; per wall the

@@ -47,7 +47,7 @@ struct InteractionSpec {
   bool ellipticTangential = true;  ///< tangential: elliptic_mindlin (else circular_mindlin)
   EccentricityMethod eccentricity = EccentricityMethod::Tabulated;
   double capFactor = 10.0;
-  double curvatureTolerance = 0.0;  ///< ContactModel::curvatureTolerance (-)
+  double curvatureTolerance = ContactModel{}.curvatureTolerance;  ///< ContactModel::curvatureTolerance (-)
   double restitution = 0.0;     ///< pair restitution e (0: min of the materials'), sets the damping
   double friction = -1.0;       ///< pair friction mu (< 0: min of the materials')
   double stiffnessScale = 1.0;  ///< reduced-stiffness factor E_mod/E (001 Eq. 24)

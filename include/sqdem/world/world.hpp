@@ -50,6 +50,8 @@ class World {
         BroadPhase search = BroadPhase::CellList);
 
   /// Sets the law of a material pair (symmetric); every pair must be set before the first step.
+  /// Set during a run, it acts from the next force computation (the contacts keep their
+  /// histories; the list of acting contacts is empty until then).
   /// Sets the model's reach from the shapes (the normal law's reach at relative radius
   /// capFactor x the largest volume radius); throws std::invalid_argument when the law admits
   /// no contact of that size.
@@ -71,6 +73,9 @@ class World {
   /// Background drag F = -c m v (c in 1/s, translation only; 0 = off): settling in a viscous
   /// medium with terminal velocity |g|/c, a declared packing aid.
   void setViscousDamping(double c) { viscousDamping_ = c; }
+  /// The detector's tolerance and warm starts (interactions.hpp; defaults: 1e-10, on).
+  void setDetectorControl(const DetectorControl& control) { detector_ = control; }
+  const DetectorControl& detectorControl() const { return detector_; }
   void setTimeStep(double dt) { dt_ = dt; }
   double timeStep() const { return dt_; }
   double time() const { return time_; }
@@ -124,7 +129,7 @@ class World {
   const ContactModel& model(std::uint32_t ma, std::uint32_t mb) const { return models_[ma * materials_.size() + mb]; }
   /// What the interaction layer reads of this world.
   InteractionScene interactionScene() const {
-    return {particles_, shapes_, boundingRadius_, walls_, models_, materials_.size(), neighbours_.skin(), dt_};
+    return {particles_, shapes_, boundingRadius_, walls_, models_, materials_.size(), neighbours_.skin(), dt_, detector_};
   }
   /// The candidate list from the neighbour list and the walls within reach, carrying the
   /// histories of persisting pairs; kept until the next rebuild (particles or walls moved more
@@ -148,6 +153,7 @@ class World {
   StepTiming timing_;
   Vec3 gravity_ = Vec3::Zero();
   double viscousDamping_ = 0.0;
+  DetectorControl detector_;
   int reorderInterval_ = 0;
   double dt_ = 0.0, time_ = 0.0;
   bool forcesCurrent_ = false;

@@ -1,0 +1,198 @@
+// Run time vs error benchmark (issue 12 item 4; printed and written as a table, never asserted).
+//
+// From a settled bed (the scene's stages, run once with the default settings), every accuracy
+// knob of the engine is varied alone: detector tolerance, warm starts, e^2 (exact, tabulated,
+// explicit), the curvature cache tolerance, the full elliptic law vs Hertz on volume-equivalent
+// spheres, the time step. Each variant runs `steps` steps of the bed (1 thread) and is measured:
+//   cost    wall time per particle-step, and per particle and simulated millisecond (the time step
+//           changes how many steps a protocol needs);
+//   force   contact force error on the same configuration: a copy of the variant's world before
+//           its last step takes that step with the reference settings (tightest of every knob),
+//           and the two forces of every contact are compared: |F - F_ref| / |F_ref|, median, 99th
+//           percentile, max (a contact only one of them has counts 1);
+//   bulk    drift of solid fraction, mean coordination and mean stress -tr(sigma)/3 after the run
+//           against the reference run's.
+// usage: bench_accuracy <bed.yaml> [steps, default 1000] [table.tsv]
+//   (bench/scenes/bed_ellipsoid.yaml, bed_sq6.yaml; bench/run_accuracy.sh runs both and plots)
+
+#include <omp.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "sqdem/scene/build_world.hpp"
+#include "sqdem/scene/scene_loader.hpp"
+#include "sqdem/world/packing_measures.hpp"
+#include "sqdem/world/world.hpp"
+
+using namespace sqdem;
+
+namespace {
+
+/// One setting of every knob.
+struct Settings {
+  double detectorTolerance = DetectorControl{}.tolerance;
+  bool warmStart = true;
+  EccentricityMethod eccentricity = EccentricityMethod::Tabulated;
+  double curvatureTolerance = 0.0;
+  bool fullLaw = true;
+  double timeStepFactor = 1.0;
+};
+
+struct Variant {
+  std::string name;
+  Settings settings;
+};
+
+void apply(const Settings& s, World& world, double baseTimeStep) {
+  world.setDetectorControl({s.detectorTolerance, s.warmStart});
+  const auto n = static_cast<std::uint32_t>(world.materials().size());
+  for (std::uint32_t a = 0; a < n; ++a) {
+    for (std::uint32_t b = a; b < n; ++b) {
+      ContactModel m = world.contactModel(a, b);
+      m.eccentricity = s.eccentricity;
+      m.curvatureTolerance = s.curvatureTolerance;
+      m.curvatures = s.fullLaw;
+      m.tangential.elliptic = s.fullLaw;
+      world.setContactModel(a, b, m);
+    }
+  }
+  world.setTimeStep(baseTimeStep * s.timeStepFactor);
+}
+
+/// Force on B of every acting contact, by key.
+std::map<std::pair<std::uint32_t, std::uint32_t>, Vec3> contactForces(const World& world) {
+  std::map<std::pair<std::uint32_t, std::uint32_t>, Vec3> forces;
+  for (const ContactView c : world.contacts()) forces[{c.a(), c.b()}] = c.force();
+  return forces;
+}
+
+double quantile(std::vector<double> v, double q) {
+  if (v.empty()) return 0.0;
+  std::sort(v.begin(), v.end());
+  return v[static_cast<std::size_t>(std::min(q * static_cast<double>(v.size()), static_cast<double>(v.size() - 1)))];
+}
+
+struct Bulk {
+  double solidFraction, coordination, pressure;
+};
+
+Bulk bulk(const World& world) {
+  const PackingMeasures m = measurePacking(world);
+  return {m.solidFraction, m.meanCoordination, m.stress.trace() / 3.0};
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2) {
+    std::fprintf(stderr, "usage: bench_accuracy <bed.yaml> [steps, default 1000] [table.tsv]\n");
+    return 2;
+  }
+  const int steps = argc > 2 ? std::atoi(argv[2]) : 1000;
+  omp_set_num_threads(1);
+  const Scene scene = loadScene(argv[1]);
+  World world = buildWorld(scene);
+  const double dt = world.timeStep();
+  double duration = 0.0;
+  for (const StageSpec& stage : scene.stages) duration += stage.duration;
+  const auto settleSteps = static_cast<long long>(std::llround(duration / dt));
+  std::printf("%s: %zu particles, settling %lld steps ...\n", argv[1], world.particles().size(), settleSteps);
+  std::fflush(stdout);
+  for (long long s = 0; s < settleSteps; ++s) world.step();
+  const World settled = world;
+
+  Settings reference;
+  reference.detectorTolerance = 1e-12;
+  reference.eccentricity = EccentricityMethod::Exact;
+  const Settings defaults;
+  std::vector<Variant> variants{{"reference (tightest)", reference}, {"default", defaults}};
+  for (const double t : {1e-11, 1e-8, 1e-6}) {
+    Settings s = defaults;
+    s.detectorTolerance = t;
+    char name[64];
+    std::snprintf(name, sizeof name, "detector tolerance %g", t);
+    variants.push_back({name, s});
+  }
+  {
+    Settings s = defaults;
+    s.warmStart = false;
+    variants.push_back({"warm start off", s});
+  }
+  for (const auto& [name, method] : {std::pair{"exact", EccentricityMethod::Exact}, {"explicit", EccentricityMethod::Explicit}}) {
+    Settings s = defaults;
+    s.eccentricity = method;
+    variants.push_back({std::string("e^2 ") + name, s});
+  }
+  for (const double t : {1e-6, 1e-5, 1e-4, 1e-3, 1e-2}) {
+    Settings s = defaults;
+    s.curvatureTolerance = t;
+    char name[64];
+    std::snprintf(name, sizeof name, "curvature tolerance %g", t);
+    variants.push_back({name, s});
+  }
+  {
+    Settings s = defaults;
+    s.fullLaw = false;
+    variants.push_back({"volume-sphere Hertz", s});
+  }
+  for (const double f : {0.5, 2.0}) {
+    Settings s = defaults;
+    s.timeStepFactor = f;
+    char name[64];
+    std::snprintf(name, sizeof name, "time step x%g", f);
+    variants.push_back({name, s});
+  }
+
+  std::FILE* tsv = argc > 3 ? std::fopen(argv[3], "w") : nullptr;
+  if (tsv) {
+    std::fprintf(tsv, "variant\tus_per_particle_step\tus_per_particle_per_ms\tforce_err_median\tforce_err_p99\tforce_err_max"
+                      "\tdrift_solid_fraction\tdrift_coordination\tdrift_pressure_rel\n");
+  }
+  std::printf("%-26s %12s %12s %10s %10s %10s %12s %12s %12s\n", "variant", "us/p-step", "us/p/ms", "F err med",
+              "F err p99", "F err max", "d(phi)", "d(Z)", "d(p)/p");
+  Bulk referenceBulk{};
+  for (const Variant& v : variants) {
+    World w = settled;
+    apply(v.settings, w, dt);
+    const int n = static_cast<int>(std::lround(steps / v.settings.timeStepFactor));
+    const auto t0 = std::chrono::steady_clock::now();
+    for (int s = 0; s < n - 1; ++s) w.step();
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    World check = w;
+    w.step();
+    apply(reference, check, dt);
+    check.setTimeStep(w.timeStep());  // the same step: only the force computation differs
+    check.step();
+    const auto mine = contactForces(w), exact = contactForces(check);
+    std::vector<double> errors;
+    for (const auto& [key, f] : exact) {
+      const auto it = mine.find(key);
+      errors.push_back(it == mine.end() ? 1.0 : (it->second - f).norm() / std::max(f.norm(), 1e-300));
+    }
+    for (const auto& [key, f] : mine) {
+      if (!exact.count(key)) errors.push_back(1.0);
+    }
+    const Bulk b = bulk(w);
+    if (&v == &variants.front()) referenceBulk = b;
+    const double perStep = 1e6 * seconds / (static_cast<double>(n - 1) * w.particles().size());
+    const double perMs = perStep * 1e-3 / w.timeStep();
+    const double dPhi = b.solidFraction - referenceBulk.solidFraction, dZ = b.coordination - referenceBulk.coordination;
+    const double dP = (b.pressure - referenceBulk.pressure) / referenceBulk.pressure;
+    std::printf("%-26s %12.3f %12.3f %10.2e %10.2e %10.2e %12.2e %12.2e %12.2e\n", v.name.c_str(), perStep, perMs,
+                quantile(errors, 0.5), quantile(errors, 0.99), quantile(errors, 1.0), dPhi, dZ, dP);
+    std::fflush(stdout);
+    if (tsv) {
+      std::fprintf(tsv, "%s\t%.6g\t%.6g\t%.6g\t%.6g\t%.6g\t%.6g\t%.6g\t%.6g\n", v.name.c_str(), perStep, perMs,
+                   quantile(errors, 0.5), quantile(errors, 0.99), quantile(errors, 1.0), dPhi, dZ, dP);
+    }
+  }
+  if (tsv) std::fclose(tsv);
+  return 0;
+}
