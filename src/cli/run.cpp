@@ -82,6 +82,18 @@ void printSummary(const World& world, const RunReport& report, double wall, cons
   std::printf("summary: %ld steps in %.2f s (%.3g particle-steps/s), %zu contacts, %d neighbour-list builds\n",
               report.stepsThisRun, wall, report.stepsThisRun * static_cast<double>(world.particles().size()) / wall,
               world.contacts().size(), world.neighbourList().builds());
+  const StepTiming& t = world.timing();
+  const auto share = [&](double part) { return wall > 0.0 ? 100.0 * part / wall : 0.0; };
+  std::printf("time: contacts (detection and laws) %.1f %%, integration %.1f %%, broad phase %.1f %%, reduction %.1f %%, "
+              "other (stages, output, checks) %.1f %%\n",
+              share(t.contacts), share(t.integration), share(t.broadPhase), share(t.reduction),
+              share(wall - t.contacts - t.integration - t.broadPhase - t.reduction));
+  std::size_t particleBytes = 0;
+  ParticleStore::forEachArray(world.particles(), [&](const auto& array) { particleBytes += array.capacity() * sizeof(array[0]); });
+  const std::size_t candidates = world.interactions().store().size();
+  std::printf("memory: %.0f B per candidate contact (%zu candidates), %.0f B per particle\n",
+              candidates ? static_cast<double>(world.interactions().bytes()) / candidates : 0.0, candidates,
+              static_cast<double>(particleBytes) / std::max<std::size_t>(world.particles().size(), 1));
   std::printf("detector: %lld calls, %.2f iterations per call, %lld unresolved, %lld deep overlaps\n",
               st.detectorCalls, st.detectorCalls ? static_cast<double>(st.detectorIterations) / st.detectorCalls : 0.0,
               st.detectorFailures, st.deepOverlaps);

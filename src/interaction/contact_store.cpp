@@ -25,6 +25,12 @@ using Element = typename std::decay_t<Array>::value_type;
 
 }  // namespace
 
+void ContactStore::reserve(std::size_t n) {
+  forEachArray(*this, [&](auto& array) {
+    if (keeps(&array)) array.reserve(n);
+  });
+}
+
 void ContactStore::add(std::uint32_t bodyA, std::uint32_t bodyB, const Vec3& bShift) {
   const std::size_t k = size();
   forEachArray(*this, [&](auto& array) {

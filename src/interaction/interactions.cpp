@@ -24,9 +24,12 @@ PairKind kindOf(const InteractionScene& scene, const ContactStore& s, std::size_
 
 ContactStore emptyStore(const InteractionScene& scene) {
   ContactStore s;
+  const bool anyNonSphere =
+      std::any_of(scene.shapes.begin(), scene.shapes.end(), [](const Superquadric& shape) { return !shape.isSphere(); });
   for (const ContactModel& m : scene.models) {
     s.withRolling = s.withRolling || m.rolling.has_value();
-    s.withCurvatureCache = s.withCurvatureCache || (m.usesCurvatures() && m.curvatureTolerance > 0.0);
+    // Round contacts (pair_kind.hpp) compute no curvatures: spheres alone need no cache.
+    s.withCurvatureCache = s.withCurvatureCache || (anyNonSphere && m.usesCurvatures() && m.curvatureTolerance > 0.0);
   }
   return s;
 }
@@ -49,6 +52,7 @@ ContactStatistics& ContactStatistics::operator+=(const ContactStatistics& o) {
 void Interactions::setCandidates(const std::vector<CandidateKey>& candidates, const InteractionScene& scene) {
   if (candidates.size() >= bodyBFlag) throw std::length_error("Interactions: more than 2^31 candidate contacts");
   ContactStore next = emptyStore(scene);
+  next.reserve(candidates.size());
   for (const CandidateKey& c : candidates) next.add(c.a, c.b, c.shift);
   // Carry the state of pairs that persist (both lists are sorted by key).
   std::size_t previous = 0;

@@ -87,6 +87,8 @@ struct ContactStore {
     return array != &curvatureCache || withCurvatureCache;
   }
 
+  /// Room for n contacts in every kept array.
+  void reserve(std::size_t n);
   /// Appends a fresh candidate (no geometry, no history).
   void add(std::uint32_t bodyA, std::uint32_t bodyB, const Vec3& bShift);
   /// Forgets contact k's geometry and history (it is solved cold next time).
