@@ -187,24 +187,9 @@ ContactGeometry separated(double gapLowerBound) {
 
 ContactGeometry sphereSphere(const Superquadric& A, const Pose& poseA, const Superquadric& B,
                              const Pose& poseB, const DetectorSettings& settings) {
-  const Vec3 d = poseB.position - poseA.position;
-  const double distance = d.norm();
   const double rA = A.a(), rB = B.a();
-  if (distance - rA - rB > settings.cutoff) return separated(distance - rA - rB);
-  ContactGeometry g;
-  if (!(distance > 0.0)) {  // coincident centres: any direction separates them by rA + rB
-    g.status = ContactStatus::Degenerate;
-    g.normal = Vec3::UnitZ();
-    g.overlap = rA + rB;
-    g.pointA = poseA.position + rA * g.normal;
-    g.pointB = poseB.position - rB * g.normal;
-    return g;
-  }
-  g.status = ContactStatus::Converged;
-  g.normal = d / distance;
-  g.overlap = rA + rB - distance;
-  g.pointA = poseA.position + rA * g.normal;
-  g.pointB = poseB.position - rB * g.normal;
+  ContactGeometry g = detectSpheres(poseA.position, rA, poseB.position, rB, settings.cutoff);
+  if (!g.converged()) return g;
   g.localPointA = poseA.toBody(g.pointA);
   g.localPointB = poseB.toBody(g.pointB);
   if (!settings.curvatures) return g;
@@ -401,13 +386,16 @@ ContactGeometry solve(const Superquadric& A, const Pose& poseA, const Superquadr
   if (A.isSphere() && B.isSphere()) return sphereSphere(A, poseA, B, poseB, settings);
 
   const Vec3 centres = poseB.position - poseA.position;
-  const double sphereGap = centres.norm() - A.boundingRadius() - B.boundingRadius();
-  if (sphereGap > settings.cutoff) return separated(sphereGap);
   const Mat3 RA = poseA.rotation(), RB = poseB.rotation();
-  const OrientedBox boxA{poseA.position, RA, A.halfExtents()};
-  const OrientedBox boxB{poseB.position, RB, B.halfExtents()};
-  if (!boxesOverlap(boxA, boxB, 0.5 * settings.cutoff)) {
-    return separated(std::max(sphereGap, settings.cutoff));
+  // The culls are for pairs that may be apart; a pair that touched at the last solve is not
+  // further apart than the cut-off one step later.
+  const bool touched = previous != nullptr && previous->converged() && previous->overlap >= 0.0;
+  if (!touched) {
+    const double sphereGap = centres.norm() - A.boundingRadius() - B.boundingRadius();
+    if (sphereGap > settings.cutoff) return separated(sphereGap);
+    const OrientedBox boxA{poseA.position, RA, A.halfExtents()};
+    const OrientedBox boxB{poseB.position, RB, B.halfExtents()};
+    if (!boxesOverlap(boxA, boxB, 0.5 * settings.cutoff)) return separated(std::max(sphereGap, settings.cutoff));
   }
   const PairFrame f{A, B, RA.transpose() * RB, RA.transpose() * centres, referenceVolumeRadius(A, B)};
   if (A.isEllipsoid() && B.isEllipsoid()) return solvePair<EllipsoidSurfaces>(f, poseA, settings, previous);
@@ -425,6 +413,25 @@ ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const Su
                               const Pose& poseB, const DetectorSettings& settings,
                               const ContactGeometry& previous) {
   return solve(A, poseA, B, poseB, settings, &previous);
+}
+
+ContactGeometry detectSpheres(const Vec3& centreA, double rA, const Vec3& centreB, double rB, double cutoff) {
+  const Vec3 d = centreB - centreA;
+  const double distance = d.norm();
+  if (distance - rA - rB > cutoff) return separated(distance - rA - rB);
+  ContactGeometry g;
+  if (!(distance > 0.0)) {  // coincident centres: any direction separates them by rA + rB
+    g.status = ContactStatus::Degenerate;
+    g.normal = Vec3::UnitZ();
+    g.overlap = rA + rB;
+  } else {
+    g.status = ContactStatus::Converged;
+    g.normal = d / distance;
+    g.overlap = rA + rB - distance;
+  }
+  g.pointA = centreA + rA * g.normal;
+  g.pointB = centreB - rB * g.normal;
+  return g;
 }
 
 ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const Plane& wall,

@@ -34,8 +34,8 @@ ContactGeometry detect(const InteractionScene& scene, const ContactModel& model,
   } else {
     const Superquadric& B = scene.shapes[p.shape[b]];
     const Pose poseB{p.position[b] + s.shift[k], p.orientation[b]};
-    if constexpr (Kind == PairKind::SphereSphere) {
-      return detectContact(A, poseOf(p, a), B, poseB, settings);  // closed form: cheaper than any cull
+    if constexpr (Kind == PairKind::SphereSphere) {  // closed form: cheaper than any cull
+      return detectSpheres(p.position[a], A.a(), poseB.position, B.a(), settings.cutoff);
     } else {
       // A pair found separated stays so until the particles could have moved by its gap.
       if (s.separation[k] > 0.0) {
@@ -50,6 +50,7 @@ ContactGeometry detect(const InteractionScene& scene, const ContactModel& model,
         previous.status = ContactStatus::Converged;
         previous.localPointA = s.localA[k];
         previous.localPointB = s.localB[k];
+        previous.overlap = s.overlap[k];
         g = detectContact(A, poseOf(p, a), B, poseB, settings, previous);
       } else {
         g = detectContact(A, poseOf(p, a), B, poseB, settings);

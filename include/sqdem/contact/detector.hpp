@@ -52,6 +52,10 @@ ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const Su
                               const Pose& poseB, const DetectorSettings& settings,
                               const ContactGeometry& previous);
 
+/// Two spheres of centres cA, cB and radii rA, rB: closed form, without body-frame points or
+/// curvatures (both are those of spheres; the engine's round contacts need neither).
+ContactGeometry detectSpheres(const Vec3& centreA, double rA, const Vec3& centreB, double rB, double cutoff);
+
 /// Particle A against a wall (body B): closed form through A's support point along -wall.normal.
 /// normal points from A into the wall (= -wall.normal); the wall's curvatures are zero.
 ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const Plane& wall,
