@@ -1,0 +1,198 @@
+// The interaction layer (interaction/): the contact store's bookkeeping, the curvature cache's
+// error bound, the round (sphere) kernels against the volume-sphere law, and the ellipsoid
+// detector path against the general gauge derivatives.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "sqdem/contact/detector.hpp"
+#include "sqdem/interaction/contact_store.hpp"
+#include "sqdem/world/world.hpp"
+
+using namespace sqdem;
+
+namespace {
+
+Domain bigBox() {
+  Domain d;
+  d.lo = Vec3::Constant(-1.0);
+  d.hi = Vec3::Constant(1.0);
+  return d;
+}
+
+ContactStore twoContacts() {
+  ContactStore s;
+  s.withRolling = true;
+  s.add(0, 3, Vec3(0.1, 0.0, 0.0));
+  s.add(1, 2, Vec3::Zero());
+  s.localA[0] = Vec3(1, 2, 3);
+  s.localB[0] = Vec3(4, 5, 6);
+  s.normal[0] = Vec3(0, 0, 1);
+  s.point[0] = Vec3(0.5, 0.5, 0.5);
+  s.spring[0] = Vec3(1e-6, 0, 0);
+  s.force[0] = Vec3(0, 0, 2);
+  s.moment[0] = Vec3(0, 1, 0);
+  s.rolling[0] = Vec3(0, 0, 3e-6);
+  return s;
+}
+
+}  // namespace
+
+// Exchanging A and B twice gives the contact back; once, every vector that points from A to B
+// (normal, spring, force, moment) turns, the points swap, the lever point moves by the shift.
+TEST(ContactStore, ExchangingBodiesTwiceIsTheIdentity) {
+  ContactStore s = twoContacts();
+  const ContactStore original = s;
+  s.exchangeBodies(0);
+  EXPECT_EQ(s.a[0], 3u);
+  EXPECT_EQ(s.b[0], 0u);
+  EXPECT_EQ(s.shift[0], Vec3(-0.1, 0.0, 0.0));
+  EXPECT_EQ(s.localA[0], original.localB[0]);
+  EXPECT_EQ(s.normal[0], -original.normal[0]);
+  EXPECT_EQ(s.point[0], original.point[0] - original.shift[0]);
+  EXPECT_EQ(s.spring[0], -original.spring[0]);
+  EXPECT_EQ(s.force[0], -original.force[0]);
+  EXPECT_EQ(s.moment[0], -original.moment[0]);
+  EXPECT_EQ(s.rolling[0], original.rolling[0]);  // symmetric in A and B (001 Eq. 20)
+  s.exchangeBodies(0);
+  EXPECT_EQ(s.a, original.a);
+  EXPECT_EQ(s.b, original.b);
+  EXPECT_EQ(s.shift, original.shift);
+  EXPECT_EQ(s.localA, original.localA);
+  EXPECT_EQ(s.localB, original.localB);
+  EXPECT_EQ(s.normal, original.normal);
+  EXPECT_NEAR((s.point[0] - original.point[0]).norm(), 0.0, 1e-16);
+  EXPECT_EQ(s.spring, original.spring);
+  EXPECT_EQ(s.force, original.force);
+  EXPECT_EQ(s.moment, original.moment);
+  EXPECT_EQ(s.rolling, original.rolling);
+}
+
+// Permuting re-orders every array together; carryOver copies the state, not the identity; a
+// store without rolling keeps neither the rolling displacement nor the moment.
+TEST(ContactStore, PermuteCarryOverAndOptionalArrays) {
+  ContactStore s = twoContacts();
+  s.permute({1, 0});
+  EXPECT_EQ(s.a[1], 0u);
+  EXPECT_EQ(s.localB[1], Vec3(4, 5, 6));
+  EXPECT_EQ(s.moment[1], Vec3(0, 1, 0));
+  ContactStore next;
+  next.add(7, 8, Vec3::Zero());
+  next.carryOver(0, s, 1);
+  EXPECT_EQ(next.a[0], 7u);
+  EXPECT_EQ(next.localA[0], Vec3(1, 2, 3));
+  EXPECT_EQ(next.spring[0], Vec3(1e-6, 0, 0));
+  EXPECT_TRUE(next.rolling.empty());
+  EXPECT_TRUE(next.moment.empty());
+  EXPECT_TRUE(next.curvatureCache.empty());
+  next.reset(0);
+  EXPECT_EQ(next.status[0], ContactStatus::Separated);
+  EXPECT_EQ(next.spring[0], Vec3::Zero());
+}
+
+namespace {
+
+/// Two ellipsoids colliding while one spins (its contact point moves on both bodies and the
+/// pair twists). At every step of the run with curvature tolerance eps, a copy of the world
+/// takes the same step with eps = 0: the largest relative difference of the elastic normal
+/// force on the same configuration (the damped total crosses zero before the bodies part), and
+/// the number of steps in contact.
+std::pair<double, int> cacheError(double eps) {
+  const Material m{1e7, 0.3, 2500.0, 0.3, 0.8};
+  World world({Superquadric::ellipsoid(1.3e-3, 0.9e-3, 0.8e-3)}, {m}, bigBox(), 2e-4);
+  ContactModel law = world.defaultContactModel(0, 0);
+  law.curvatureTolerance = eps;
+  world.setContactModel(0, 0, law);
+  world.addParticle(0, 0, Vec3::Zero(), Quat(Eigen::AngleAxisd(0.3, Vec3(1, 2, 3).normalized())));
+  world.addParticle(0, 0, Vec3(2.05e-3, 0.3e-3, 0.2e-3), Quat(Eigen::AngleAxisd(1.1, Vec3(-1, 0.5, 2).normalized())));
+  world.particles().velocity[1] = Vec3(-0.02, 0.01, 0.005);
+  world.particles().setAngularVelocity(1, Vec3(0.0, 50.0, 200.0));
+  world.setTimeStep(1e-7);
+  double worst = 0.0;
+  int touching = 0;
+  for (int k = 0; k < 4000; ++k) {
+    World exact = world;
+    law.curvatureTolerance = 0.0;
+    exact.setContactModel(0, 0, law);
+    exact.step();
+    world.step();
+    if (world.contacts().empty() || exact.contacts().empty()) continue;
+    ++touching;
+    const NormalLoad& f = world.contacts().front().normalLoad();
+    const NormalLoad& g = exact.contacts().front().normalLoad();
+    worst = std::max(worst, std::abs((f.force - f.damping) - (g.force - g.damping)) / (g.force - g.damping));
+  }
+  return {worst, touching};
+}
+
+}  // namespace
+
+// curvature_cache.hpp: holding the curvature constants while the contact moves by at most
+// eps R_ref (or turns by eps) changes the Hertz force by O(eps/2) relative, so not more than eps;
+// with eps = 1e-2 the cache is really used (the forces differ from the exact ones).
+TEST(CurvatureCache, ForceErrorStaysWithinTheTolerance) {
+  for (const double eps : {1e-4, 1e-2}) {
+    const auto [worst, touching] = cacheError(eps);
+    std::printf("eps %g: %d steps in contact, largest relative force error %.3g\n", eps, touching, worst);
+    ASSERT_GT(touching, 500);  // an impact of ~700 steps
+    EXPECT_LE(worst, eps) << "eps " << eps;
+    if (eps == 1e-2) EXPECT_GT(worst, 1e-5);  // the cache was used
+  }
+}
+
+// pair_kind.hpp: two spheres (radii 1 and 0.6 mm) under the curvature-exact law are the law on
+// the volume-equivalent spheres, R* = rA rB / (rA + rB), circle: the same force to round-off.
+TEST(RoundContacts, SpherePairUnderTheEllipticLawIsTheVolumeSphereLaw) {
+  const Material m{1e7, 0.3, 2500.0, 0.3, 0.5};
+  Vec3 force[2];
+  for (const bool curvatures : {true, false}) {
+    World world({Superquadric::sphere(1e-3), Superquadric::sphere(0.6e-3)}, {m}, bigBox(), 2e-4);
+    ContactModel law = world.defaultContactModel(0, 0);
+    law.curvatures = curvatures;
+    law.tangential.elliptic = curvatures;
+    world.setContactModel(0, 0, law);
+    world.addParticle(0, 0, Vec3::Zero(), Quat::Identity());
+    world.addParticle(1, 0, Vec3(1.0, -0.5, 0.3).normalized() * 1.59e-3, Quat::Identity());
+    world.particles().velocity[1] = Vec3(0.01, 0.02, -0.03);
+    world.setTimeStep(1e-7);
+    for (int k = 0; k < 50; ++k) world.step();
+    ASSERT_EQ(world.contacts().size(), 1u);
+    force[curvatures] = world.contacts().front().force();
+  }
+  ASSERT_GT(force[1].norm(), 0.0);
+  EXPECT_LT((force[0] - force[1]).norm(), 1e-12 * force[1].norm());
+}
+
+// pair_surfaces.hpp: the ellipsoid path's curvatures at its solution equal those of the
+// general gauge derivatives (Superquadric::derivatives, curvature.hpp) at the same points, and
+// the solution is a common-normal pair (004 §2.1): nA = -nB along pB - pA.
+TEST(EllipsoidDetector, CurvaturesAndCommonNormalAgreeWithTheGeneralGauge) {
+  std::mt19937_64 rng(12);
+  std::uniform_real_distribution<double> axis(0.4, 1.2), angle(-3.0, 3.0), unit(-1.0, 1.0);
+  int solved = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    const Superquadric A = Superquadric::ellipsoid(axis(rng), axis(rng), axis(rng));
+    const Superquadric B = Superquadric::ellipsoid(axis(rng), axis(rng), axis(rng));
+    const auto rotation = [&] { return Quat(Eigen::AngleAxisd(angle(rng), Vec3(unit(rng), unit(rng), unit(rng)).normalized())); };
+    const Pose poseA{Vec3::Zero(), rotation()};
+    const Vec3 direction = Vec3(unit(rng), unit(rng), unit(rng)).normalized();
+    const Pose poseB{direction * 0.9 * (A.boundingRadius() + B.boundingRadius()), rotation()};
+    const ContactGeometry g = detectContact(A, poseA, B, poseB, {.cutoff = 10.0});
+    if (!g.converged()) continue;
+    ++solved;
+    for (const auto& [shape, pose, local, curvature, sign] :
+         {std::tuple{&A, &poseA, g.localPointA, g.curvatureA, 1.0}, std::tuple{&B, &poseB, g.localPointB, g.curvatureB, -1.0}}) {
+      const GaugeDerivatives d = shape->derivatives(local);
+      const PrincipalCurvatures expected = principalCurvatures(d.gradient, d.hessian).rotated(pose->rotation());
+      EXPECT_NEAR(curvature.k1, expected.k1, 1e-9 * expected.k1) << "trial " << trial;
+      EXPECT_NEAR(curvature.k2, expected.k2, 1e-9 * expected.k1) << "trial " << trial;
+      EXPECT_NEAR(std::abs(curvature.d1.dot(expected.d1)), 1.0, 1e-6) << "trial " << trial;
+      const Vec3 normal = (pose->rotation() * d.gradient).normalized();
+      EXPECT_NEAR((sign * normal - g.normal).norm(), 0.0, 1e-9) << "trial " << trial;
+    }
+    EXPECT_NEAR((g.pointB - g.pointA).cross(g.normal).norm(), 0.0, 1e-9) << "trial " << trial;
+  }
+  EXPECT_GT(solved, 150);
+}
