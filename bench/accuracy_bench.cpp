@@ -40,7 +40,7 @@ struct Settings {
   double detectorTolerance = DetectorControl{}.tolerance;
   bool warmStart = true;
   EccentricityMethod eccentricity = EccentricityMethod::Tabulated;
-  double curvatureTolerance = 0.0;
+  double curvatureTolerance = ContactModel{}.curvatureTolerance;
   bool fullLaw = true;
   double timeStepFactor = 1.0;
 };
@@ -111,6 +111,7 @@ int main(int argc, char** argv) {
   Settings reference;
   reference.detectorTolerance = 1e-12;
   reference.eccentricity = EccentricityMethod::Exact;
+  reference.curvatureTolerance = 0.0;
   const Settings defaults;
   std::vector<Variant> variants{{"reference (tightest)", reference}, {"default", defaults}};
   for (const double t : {1e-11, 1e-8, 1e-6}) {
@@ -130,7 +131,7 @@ int main(int argc, char** argv) {
     s.eccentricity = method;
     variants.push_back({std::string("e^2 ") + name, s});
   }
-  for (const double t : {1e-6, 1e-5, 1e-4, 1e-3, 1e-2}) {
+  for (const double t : {0.0, 1e-6, 1e-5, 1e-3, 1e-2}) {
     Settings s = defaults;
     s.curvatureTolerance = t;
     char name[64];
