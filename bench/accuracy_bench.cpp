@@ -131,7 +131,7 @@ int main(int argc, char** argv) {
     s.eccentricity = method;
     variants.push_back({std::string("e^2 ") + name, s});
   }
-  for (const double t : {0.0, 1e-6, 1e-5, 1e-3, 1e-2}) {
+  for (const double t : {0.0, 1e-6, 1e-4, 1e-3, 1e-2}) {
     Settings s = defaults;
     s.curvatureTolerance = t;
     char name[64];

@@ -93,9 +93,10 @@ LawGeometry cachedLawGeometry(const InteractionScene& scene, const ContactModel&
   const ParticleStore& p = scene.particles;
   const std::uint32_t a = s.a[k], b = s.b[k];
   const Quat relative = wall ? p.orientation[a].conjugate() : Quat(p.orientation[a].conjugate() * p.orientation[b]);
+  const double reference = wall ? motion.volumeRadiusA : std::sqrt(motion.volumeRadiusA * motion.volumeRadiusB);
   CurvatureCache& cache = s.curvatureCache[k];
   const Mat3 RA = p.orientation[a].toRotationMatrix();
-  if (!cache.holds(g.localPointA, g.localPointB, relative, model.curvatureTolerance, cosHalfAngle)) {
+  if (!cache.holds(g.localPointA, g.localPointB, relative, model.curvatureTolerance * reference, cosHalfAngle)) {
     const Superquadric& A = scene.shapes[p.shape[a]];
     if constexpr (wall) {
       addCurvatures(g, A, poseOf(p, a));

@@ -37,10 +37,10 @@ struct ContactModel {
   EccentricityMethod eccentricity = EccentricityMethod::Tabulated;
   double capFactor = 10.0;         ///< relative radii capped at capFactor R_vol_ref
   /// eps of curvature_cache.hpp: the law's curvature constants are re-evaluated when a contact
-  /// point has moved by eps Ri on its body (Ri the smaller relative radius) or the bodies turned
-  /// by eps rad against each other since; 0: every step. Default 1e-4 (bench/accuracy_bench.cpp,
-  /// README "Speed, memory and accuracy").
-  double curvatureTolerance = 1e-4;
+  /// point has moved by eps R_vol_ref on its body or the bodies turned by eps rad against each
+  /// other since; 0: every step. Default 1e-5: contact forces within 5e-5 of the exact ones on
+  /// ellipsoid and n = 6 beds (bench/accuracy_bench.cpp, README "Speed, memory and accuracy").
+  double curvatureTolerance = 1e-5;
   double effectiveModulus = 0.0;   ///< E* (Pa), after any reduced stiffness
   ViscousDamping damping;          ///< normal and tangential
   MindlinSpring tangential;        ///< friction 0: none; on the circle without curvatures
