@@ -114,42 +114,23 @@ int main(int argc, char** argv) {
   reference.curvatureTolerance = 0.0;
   const Settings defaults;
   std::vector<Variant> variants{{"reference (tightest)", reference}, {"default", defaults}};
-  for (const double t : {1e-11, 1e-8, 1e-6}) {
+  const auto vary = [&](const std::string& name, auto change) {
     Settings s = defaults;
-    s.detectorTolerance = t;
-    char name[64];
-    std::snprintf(name, sizeof name, "detector tolerance %g", t);
+    change(s);
     variants.push_back({name, s});
-  }
-  {
-    Settings s = defaults;
-    s.warmStart = false;
-    variants.push_back({"warm start off", s});
-  }
-  for (const auto& [name, method] : {std::pair{"exact", EccentricityMethod::Exact}, {"explicit", EccentricityMethod::Explicit}}) {
-    Settings s = defaults;
-    s.eccentricity = method;
-    variants.push_back({std::string("e^2 ") + name, s});
-  }
-  for (const double t : {0.0, 1e-6, 1e-4, 1e-3, 1e-2}) {
-    Settings s = defaults;
-    s.curvatureTolerance = t;
+  };
+  const auto named = [](const char* what, double value) {
     char name[64];
-    std::snprintf(name, sizeof name, "curvature tolerance %g", t);
-    variants.push_back({name, s});
-  }
-  {
-    Settings s = defaults;
-    s.fullLaw = false;
-    variants.push_back({"volume-sphere Hertz", s});
-  }
-  for (const double f : {0.5, 2.0}) {
-    Settings s = defaults;
-    s.timeStepFactor = f;
-    char name[64];
-    std::snprintf(name, sizeof name, "time step x%g", f);
-    variants.push_back({name, s});
-  }
+    std::snprintf(name, sizeof name, "%s%g", what, value);
+    return std::string(name);
+  };
+  for (const double t : {1e-11, 1e-8, 1e-6}) vary(named("detector tolerance ", t), [&](Settings& s) { s.detectorTolerance = t; });
+  vary("warm start off", [](Settings& s) { s.warmStart = false; });
+  vary("e^2 exact", [](Settings& s) { s.eccentricity = EccentricityMethod::Exact; });
+  vary("e^2 explicit", [](Settings& s) { s.eccentricity = EccentricityMethod::Explicit; });
+  for (const double t : {0.0, 1e-6, 1e-4, 1e-3, 1e-2}) vary(named("curvature tolerance ", t), [&](Settings& s) { s.curvatureTolerance = t; });
+  vary("volume-sphere Hertz", [](Settings& s) { s.fullLaw = false; });
+  for (const double f : {0.5, 2.0}) vary(named("time step x", f), [&](Settings& s) { s.timeStepFactor = f; });
 
   std::FILE* tsv = argc > 3 ? std::fopen(argv[3], "w") : nullptr;
   if (tsv) {

@@ -15,12 +15,8 @@ using namespace sqdem;
 
 namespace {
 
-Domain bigBox() {
-  Domain d;
-  d.lo = Vec3::Constant(-1.0);
-  d.hi = Vec3::Constant(1.0);
-  return d;
-}
+/// An open box far larger than the pairs below.
+const Domain openSpace{.lo = Vec3::Constant(-1.0), .hi = Vec3::Constant(1.0)};
 
 ContactStore twoContacts() {
   ContactStore s;
@@ -101,7 +97,7 @@ namespace {
 /// the number of steps in contact.
 std::pair<double, int> cacheError(double eps) {
   const Material m{1e7, 0.3, 2500.0, 0.3, 0.8};
-  World world({Superquadric::ellipsoid(1.3e-3, 0.9e-3, 0.8e-3)}, {m}, bigBox(), 2e-4);
+  World world({Superquadric::ellipsoid(1.3e-3, 0.9e-3, 0.8e-3)}, {m}, openSpace, 2e-4);
   ContactModel law = world.defaultContactModel(0, 0);
   law.curvatureTolerance = eps;
   world.setContactModel(0, 0, law);
@@ -148,7 +144,7 @@ TEST(RoundContacts, SpherePairUnderTheEllipticLawIsTheVolumeSphereLaw) {
   const Material m{1e7, 0.3, 2500.0, 0.3, 0.5};
   Vec3 force[2];
   for (const bool curvatures : {true, false}) {
-    World world({Superquadric::sphere(1e-3), Superquadric::sphere(0.6e-3)}, {m}, bigBox(), 2e-4);
+    World world({Superquadric::sphere(1e-3), Superquadric::sphere(0.6e-3)}, {m}, openSpace, 2e-4);
     ContactModel law = world.defaultContactModel(0, 0);
     law.curvatures = curvatures;
     law.tangential.elliptic = curvatures;

@@ -7,13 +7,6 @@
 #include "sqdem/world/checkpoint_file.hpp"
 
 namespace sqdem {
-namespace {
-
-void require(bool ok, const char* what) {
-  if (!ok) throw CheckpointError(std::string("checkpoint is corrupt (") + what + ")");
-}
-
-}  // namespace
 
 void Interactions::writeState(CheckpointWriter& out) const {
   out.put(static_cast<std::uint8_t>(store_.withRolling));
@@ -29,7 +22,7 @@ Interactions Interactions::readState(CheckpointReader& in, const InteractionScen
   std::uint8_t rolling = 0, cache = 0;
   in.get(rolling);
   in.get(cache);
-  require(rolling == expected.withRolling && cache == expected.withCurvatureCache, "optional contact arrays");
+  requireIntact(rolling == expected.withRolling && cache == expected.withCurvatureCache, "optional contact arrays");
   s.withRolling = expected.withRolling;
   s.withCurvatureCache = expected.withCurvatureCache;
   const std::uint64_t anyLength = ~std::uint64_t{0};  // bounded by the bytes left
@@ -42,20 +35,20 @@ Interactions Interactions::readState(CheckpointReader& in, const InteractionScen
     }
     in.getVector(array, first ? anyLength : count);
     if (first) count = array.size(), first = false;
-    require(array.size() == count, "contact array length");
+    requireIntact(array.size() == count, "contact array length");
   });
   std::vector<std::uint32_t> interacting;
   in.getVector(interacting, count);
 
   const std::size_t n = scene.particles.size(), walls = scene.walls.size();
   for (std::size_t k = 0; k < count; ++k) {
-    require(s.a[k] < n && (s.onWall(k) ? (s.b[k] & ~wallFlag) < walls : s.b[k] < n && s.a[k] != s.b[k]),
+    requireIntact(s.a[k] < n && (s.onWall(k) ? (s.b[k] & ~wallFlag) < walls : s.b[k] < n && s.a[k] != s.b[k]),
             "contact index");
-    require(static_cast<unsigned>(s.status[k]) <= static_cast<unsigned>(ContactStatus::Degenerate), "contact status");
-    require(k == 0 || s.key(k - 1) < s.key(k), "contact order");
+    requireIntact(static_cast<unsigned>(s.status[k]) <= static_cast<unsigned>(ContactStatus::Degenerate), "contact status");
+    requireIntact(k == 0 || s.key(k - 1) < s.key(k), "contact order");
   }
   for (std::size_t k = 0; k < interacting.size(); ++k) {
-    require(interacting[k] < count && (k == 0 || interacting[k - 1] < interacting[k]), "interacting contacts");
+    requireIntact(interacting[k] < count && (k == 0 || interacting[k - 1] < interacting[k]), "interacting contacts");
   }
   out.interacting_ = std::move(interacting);
   out.regroup(scene);

@@ -10,13 +10,6 @@
 #include "sqdem/world/world.hpp"
 
 namespace sqdem {
-namespace {
-
-void require(bool ok, const char* what) {
-  if (!ok) throw CheckpointError(std::string("checkpoint is corrupt (") + what + ")");
-}
-
-}  // namespace
 
 void World::writeState(CheckpointWriter& out) const {
   out.put(static_cast<std::uint64_t>(particles_.size()));
@@ -51,7 +44,7 @@ void World::readState(CheckpointReader& in) {
   ParticleStore restored;
   ParticleStore::forEachArray(restored, [&](auto& array) {
     in.getVector(array, n);
-    require(array.size() == n, "per-particle array length");
+    requireIntact(array.size() == n, "per-particle array length");
   });
   std::vector<double> boundingRadius;
   std::vector<Wall> wallRecords;
@@ -61,11 +54,11 @@ void World::readState(CheckpointReader& in) {
   in.getVector(boundingRadius, n);
   in.getVector(wallRecords, walls);
   in.getVector(wallReference, walls);
-  require(boundingRadius.size() == n && wallRecords.size() == walls, "array lengths");
+  requireIntact(boundingRadius.size() == n && wallRecords.size() == walls, "array lengths");
   for (std::size_t i = 0; i < n; ++i) {
-    require(restored.shape[i] < shapes_.size() && restored.material[i] < materials_.size(), "shape or material index");
+    requireIntact(restored.shape[i] < shapes_.size() && restored.material[i] < materials_.size(), "shape or material index");
   }
-  for (const Wall& w : wallRecords) require(w.material < materials_.size(), "wall material index");
+  for (const Wall& w : wallRecords) requireIntact(w.material < materials_.size(), "wall material index");
   Interactions interactions = Interactions::readState(
       in, {restored, shapes_, boundingRadius, wallRecords, models_, materials_.size(), neighbours_.skin(), dt_, detector_});
   in.getVector(reference, n);
@@ -83,15 +76,15 @@ void World::readState(CheckpointReader& in) {
   in.get(dt);
   in.get(time);
   in.get(forcesCurrent);
-  require(in.left() == 0, "trailing bytes");
+  requireIntact(in.left() == 0, "trailing bytes");
 
   // Every index the engine will follow.
   std::vector<std::uint8_t> seen(n, 0);
-  for (std::size_t i = 0; i < n; ++i) require(restored.id[i] < n && !seen[restored.id[i]]++, "particle ids");
-  require(reference.empty() || reference.size() == n, "array lengths");
-  require(wallReference.empty() || wallReference.size() == walls, "wall reference points");
-  for (const CandidatePair& c : candidates) require(c.a < n && c.b < n && c.a != c.b, "candidate pair index");
-  require(builds >= 0 && std::isfinite(dt) && dt > 0.0 && std::isfinite(time), "counters");
+  for (std::size_t i = 0; i < n; ++i) requireIntact(restored.id[i] < n && !seen[restored.id[i]]++, "particle ids");
+  requireIntact(reference.empty() || reference.size() == n, "array lengths");
+  requireIntact(wallReference.empty() || wallReference.size() == walls, "wall reference points");
+  for (const CandidatePair& c : candidates) requireIntact(c.a < n && c.b < n && c.a != c.b, "candidate pair index");
+  requireIntact(builds >= 0 && std::isfinite(dt) && dt > 0.0 && std::isfinite(time), "counters");
 
   particles_ = std::move(restored);
   boundingRadius_ = std::move(boundingRadius);

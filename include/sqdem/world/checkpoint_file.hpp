@@ -27,6 +27,12 @@ class CheckpointError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// Throws CheckpointError "checkpoint is corrupt (what)" unless ok: the check of every count and
+/// index a reader follows.
+inline void requireIntact(bool ok, const char* what) {
+  if (!ok) throw CheckpointError(std::string("checkpoint is corrupt (") + what + ")");
+}
+
 /// Incremental 64-bit hash (CRC-64/ECMA-182 through Boost.CRC) of a sequence of values.
 class Fingerprint {
  public:
