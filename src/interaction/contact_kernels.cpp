@@ -29,7 +29,7 @@ ContactGeometry detect(const InteractionScene& scene, const ContactModel& model,
   // Gaps within the skin are solved too (rough and adhesive contacts act across them, and every
   // candidate is warm-started next step).
   const DetectorSettings settings{.cutoff = scene.skin, .tolerance = scene.detector.tolerance, .curvatures = curvatures};
-  if constexpr (Kind == PairKind::ParticleWall || Kind == PairKind::SphereWall) {
+  if constexpr (withWall(Kind)) {
     return detectContact(A, poseOf(p, a), scene.walls[b & ~wallFlag].plane, settings);
   } else {
     const Superquadric& B = scene.shapes[p.shape[b]];
@@ -70,7 +70,7 @@ ContactKinematics kinematics(const InteractionScene& scene, const ContactStore& 
   motion.volumeRadiusA = scene.shapes[p.shape[a]].volumeEquivalentRadius();
   motion.angularVelocityA = p.angularVelocity[a];
   const Vec3 velocityA = p.velocity[a] + p.angularVelocity[a].cross(point - p.position[a]);
-  if constexpr (Kind == PairKind::ParticleWall || Kind == PairKind::SphereWall) {
+  if constexpr (withWall(Kind)) {
     motion.relativeVelocity = scene.walls[b & ~wallFlag].velocity - velocityA;
     motion.effectiveMass = p.mass[a];
   } else {
@@ -83,13 +83,12 @@ ContactKinematics kinematics(const InteractionScene& scene, const ContactStore& 
   return motion;
 }
 
-/// One group: detect, then (within the law's range) the law; the step's statistics.
 /// The law's view of contact k from its curvature cache while that holds; otherwise the
 /// curvatures at the new contact points are computed and the cache refreshed.
 template <PairKind Kind>
 LawGeometry cachedLawGeometry(const InteractionScene& scene, const ContactModel& model, ContactStore& s,
                               std::uint32_t k, ContactGeometry& g, const ContactKinematics& motion, double cosHalfAngle) {
-  constexpr bool wall = Kind == PairKind::ParticleWall;
+  constexpr bool wall = withWall(Kind);
   const ParticleStore& p = scene.particles;
   const std::uint32_t a = s.a[k], b = s.b[k];
   const Quat relative = wall ? p.orientation[a].conjugate() : Quat(p.orientation[a].conjugate() * p.orientation[b]);
@@ -127,6 +126,7 @@ ContactModel asRun(ContactModel model, PairKind kind) {
   return model;
 }
 
+/// One group: detect, then (within the law's range) the law; the step's statistics.
 template <PairKind Kind, NormalLawComponent Law>
 void runGroup(const std::vector<std::uint32_t>& members, const ContactModel& pairModel, const Law& law,
               const InteractionScene& scene, ContactStore& s, ContactStatistics& statistics) {
@@ -155,13 +155,9 @@ void runGroup(const std::vector<std::uint32_t>& members, const ContactModel& pai
     ContactForce force{.acting = false};
     if (g.converged() && g.overlap > -range) {
       const ContactKinematics motion = kinematics<Kind>(scene, s, k, s.point[k]);
-      if constexpr (Kind == PairKind::SphereSphere || Kind == PairKind::SphereWall) {
-        force = detail::contactForce(model, law, detail::lawGeometry(model, g, motion), motion, history, scene.dt);
-      } else {
-        const LawGeometry view = cached ? cachedLawGeometry<Kind>(scene, model, s, k, g, motion, cosHalfAngle)
-                                        : detail::lawGeometry(model, g, motion);
-        force = detail::contactForce(model, law, view, motion, history, scene.dt);
-      }
+      const LawGeometry view = cached ? cachedLawGeometry<Kind>(scene, model, s, k, g, motion, cosHalfAngle)
+                                      : detail::lawGeometry(model, g, motion);
+      force = detail::contactForce(model, law, view, motion, history, scene.dt);
       invalid += !force.valid;
     } else {
       lost += std::isinf(range);  // an adhesive contact its law still held
@@ -176,7 +172,7 @@ void runGroup(const std::vector<std::uint32_t>& members, const ContactModel& pai
     s.acting[k] = force.acting;
     s.force[k] = force.onB;
     s.load[k] = {force.normal, force.normalDamping, force.normalStiffness, force.area};
-    if constexpr (Kind != PairKind::ParticleWall && Kind != PairKind::SphereWall) {
+    if constexpr (!withWall(Kind)) {
       ++calls;
       iterations += g.iterations;
     }

@@ -22,6 +22,8 @@ enum class PairKind : std::uint8_t {
 /// volume-equivalent spheres (the radius cap, capFactor sqrt(rA rB) > R*, never binds) and
 /// elliptic Mindlin is circular Mindlin: no curvatures are computed.
 constexpr bool round(PairKind kind) { return kind == PairKind::SphereSphere || kind == PairKind::SphereWall; }
+/// Body B is a wall.
+constexpr bool withWall(PairKind kind) { return kind == PairKind::SphereWall || kind == PairKind::ParticleWall; }
 
 inline PairKind pairKind(const Superquadric& A, const Superquadric& B) {
   if (A.isSphere() && B.isSphere()) return PairKind::SphereSphere;
