@@ -24,40 +24,55 @@ void freeRotation(int k, double t, double inertia, Vec4& q, Vec4& p) {
   p = c * p + s * Pp;
 }
 
+/// I1 = I2 = I3: the world angular momentum L = vec(p ⊗ q*) / 2 is the body's (p = 2 q ⊗ (0, L_body)
+/// = 2 (0, L) ⊗ q), so the kick and the free rotor need no rotation into the body frame.
+bool isotropic(const Vec3& I) { return I.x() == I.y() && I.y() == I.z(); }
+
+Quat asQuat(const Vec4& v) { return {v(0), v(1), v(2), v(3)}; }
+Vec4 asVector(const Quat& q) { return {q.w(), q.x(), q.y(), q.z()}; }
+
 }  // namespace
 
 void kick(ParticleStore& particles, std::size_t i, double halfStep) {
   particles.velocity[i] += halfStep / particles.mass[i] * particles.force[i];
   const Quat& q = particles.orientation[i];
-  const Vec3 tauBody = q.conjugate() * particles.torque[i];
-  const Quat qt = q * Quat(0.0, tauBody.x(), tauBody.y(), tauBody.z());
-  particles.conjugateMomentum[i] += 2.0 * halfStep * Vec4(qt.w(), qt.x(), qt.y(), qt.z());
+  const Vec3& tau = particles.torque[i];
+  const Vec3& I = particles.inertia[i];
+  Vec4& p = particles.conjugateMomentum[i];
+  if (isotropic(I)) {  // p += h 2 (0, tau) ⊗ q, w = L / I
+    p += 2.0 * halfStep * asVector(Quat(0.0, tau.x(), tau.y(), tau.z()) * q);
+    particles.angularVelocity[i] = 0.5 / I.x() * (asQuat(p) * q.conjugate()).vec();
+    return;
+  }
+  const Vec3 tauBody = q.conjugate() * tau;
+  p += 2.0 * halfStep * asVector(q * Quat(0.0, tauBody.x(), tauBody.y(), tauBody.z()));
   particles.updateAngularVelocity(i);
 }
 
 void drift(ParticleStore& particles, std::size_t i, double step) {
   particles.position[i] += step * particles.velocity[i];
   const Vec3& I = particles.inertia[i];
-  if (I.x() == I.y() && I.y() == I.z()) {
-    // Isotropic body (a sphere): the free rotor's exact flow is a uniform rotation about the
-    // constant world angular velocity; the body angular momentum does not change.
-    const Vec3 w = particles.angularVelocity[i];
+  Vec4& p = particles.conjugateMomentum[i];
+  if (isotropic(I)) {
+    // The free rotor's exact flow: a uniform rotation r by |w| h about the constant world angular
+    // velocity w; r commutes with (0, L), so p = 2 (0, L) ⊗ q turns into r ⊗ p.
+    const Vec3& w = particles.angularVelocity[i];
     const double rate = w.norm();
     if (rate > 0.0) {
-      particles.orientation[i] = (Quat(Eigen::AngleAxisd(rate * step, w / rate)) * particles.orientation[i]).normalized();
-      particles.setAngularVelocity(i, w);
+      const Quat r(Eigen::AngleAxisd(rate * step, w / rate));
+      particles.orientation[i] = (r * particles.orientation[i]).normalized();
+      p = asVector(r * asQuat(p));
     }
     return;
   }
   const Quat& orientation = particles.orientation[i];
-  Vec4 q(orientation.w(), orientation.x(), orientation.y(), orientation.z());
-  Vec4& p = particles.conjugateMomentum[i];
+  Vec4 q = asVector(orientation);
   freeRotation(3, 0.5 * step, I.z(), q, p);
   freeRotation(2, 0.5 * step, I.y(), q, p);
   freeRotation(1, step, I.x(), q, p);
   freeRotation(2, 0.5 * step, I.y(), q, p);
   freeRotation(3, 0.5 * step, I.z(), q, p);
-  particles.orientation[i] = Quat(q(0), q(1), q(2), q(3)).normalized();
+  particles.orientation[i] = asQuat(q).normalized();
   particles.updateAngularVelocity(i);
 }
 
