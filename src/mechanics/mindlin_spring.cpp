@@ -12,26 +12,31 @@ Vec3 MindlinSpring::force(const NormalContact& c, const Vec3& majorAxis, const V
                           double limit, const ViscousDamping& damping, double mass, Vec3& spring, double dt) const {
   keepInTangentPlane(spring, n);
   spring += vt * dt;
-  // Stiffness along the contact ellipse's major axis u and minor axis v (circle: k_u = k_v).
-  Vec3 u;
-  double ku, kv;
-  if (elliptic) {
-    u = majorAxis;
-    const double scale = 8.0 * effectiveShear * contactSemiMajorAxis(area, c.factors.e2);
-    const MindlinPhi phi = mindlinPhi(c.factors.K, c.factors.D, poissonRatio);
-    ku = scale / phi.major;
-    kv = scale / phi.minor;
-  } else {
-    u = n.unitOrthogonal();
-    ku = kv = 8.0 * effectiveShear * std::sqrt(area / std::numbers::pi);
+  if (!elliptic) {
+    // The circle: one stiffness in every tangential direction, K_t = 8 G* a I.
+    const double k = 8.0 * effectiveShear * std::sqrt(area / std::numbers::pi);
+    const double eta = damping.coefficient(mass, k);
+    Vec3 Ft = -(k * spring + eta * vt);
+    const double magnitude = Ft.norm();
+    if (magnitude > limit) {
+      // Slip: the spring shrinks to what carries the Coulomb force.
+      Ft *= limit / magnitude;
+      spring = k > 0.0 ? Vec3(-(Ft + eta * vt) / k) : Vec3::Zero();
+    }
+    return Ft;
   }
+  // The ellipse: stiffness along its major axis u and minor axis v.
+  const Vec3& u = majorAxis;
+  const double scale = 8.0 * effectiveShear * contactSemiMajorAxis(area, c.factors.e2);
+  const MindlinPhi phi = mindlinPhi(c.factors.K, c.factors.D, poissonRatio);
+  const double ku = scale / phi.major, kv = scale / phi.minor;
   const Vec3 v = n.cross(u);
   const double etaU = damping.coefficient(mass, ku), etaV = damping.coefficient(mass, kv);
   const double vu = vt.dot(u), vv = vt.dot(v);
   Vec3 Ft = -(ku * spring.dot(u) + etaU * vu) * u - (kv * spring.dot(v) + etaV * vv) * v;
-  if (Ft.norm() > limit) {
-    // Slip: the spring shrinks to what carries the Coulomb force.
-    Ft *= limit / Ft.norm();
+  const double magnitude = Ft.norm();
+  if (magnitude > limit) {
+    Ft *= limit / magnitude;
     spring = ku > 0.0 && kv > 0.0 ? Vec3(-(Ft.dot(u) + etaU * vu) / ku * u - (Ft.dot(v) + etaV * vv) / kv * v) : Vec3::Zero();
   }
   return Ft;
