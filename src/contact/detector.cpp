@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "pair_surfaces.hpp"
+#include "pivoted_lu.hpp"
 #include "sqdem/geometry/oriented_box.hpp"
 
 namespace sqdem {
@@ -67,11 +68,13 @@ void withJacobian(const Surfaces& surfaces, Iterate<Surfaces>& it) {
   const Vec3& nB = it.b.normal;
   const Vec3 tA[2] = {it.t1, it.t2};
   const Vec3 tB[2] = {it.tb1, it.tb2};
+  const Vec3 SA[2] = {surfaces.shapeOperator(it.a, tA[0]), surfaces.shapeOperator(it.a, tA[1])};
+  const Vec3 SB[2] = {surfaces.shapeOperator(it.b, tB[0]), surfaces.shapeOperator(it.b, tB[1])};
   for (int i = 0; i < 2; ++i) {
     const Vec3 tiOnB = tA[i] - nB * nB.dot(tA[i]);  // P_B t_i
     for (int j = 0; j < 2; ++j) {
-      const double kA = surfaces.shapeForm(it.a, tA[i], tA[j]);  // shape operator of A
-      const double kB = surfaces.shapeForm(it.b, tiOnB, tB[j]);  // shape operator of B
+      const double kA = tA[i].dot(SA[j]);  // shape operator of A
+      const double kB = tiOnB.dot(SB[j]);  // shape operator of B
       it.J(i, j) = L * kA;
       it.J(i, j + 2) = L * kB;
       // d(t_i.(pB - pA)): -t_i.t_j from moving pA, overlap*kA from the basis turning with nA.
@@ -127,14 +130,14 @@ SupportPair minimiseSupportGap(const PairFrame& f, const Vec3& startNormal,
 /// does not square J's condition number (large where the relative curvature nearly vanishes,
 /// as in flat-on-flat contacts) and returns the minimum-norm-like basic step when J is singular.
 /// The undamped step of a well-conditioned J (the common case) uses the cheaper partially
-/// pivoted LU, which gives the same solution; "well-conditioned" is judged by the ratio of the
-/// smallest to the largest pivot (cheap; Eigen's rcond() estimate cost as much as the solve).
+/// pivoted LU (pivoted_lu.hpp), which gives the same solution; "well-conditioned" is judged by
+/// the ratio of the smallest to the largest pivot (cheap; an rcond() estimate costs as much as
+/// the solve).
 template <class Surfaces>
 Vec4 dampedStep(const Iterate<Surfaces>& it, double damping) {
   if (damping == 0.0) {
-    const Eigen::PartialPivLU<Mat4> lu(it.J);
-    const Vec4 pivots = lu.matrixLU().diagonal().cwiseAbs();
-    if (pivots.minCoeff() > 1e-6 * pivots.maxCoeff()) return lu.solve(-it.r);
+    const detail::PivotedLu<4> lu(it.J);
+    if (lu.wellConditioned(1e-6)) return lu.solve(-it.r);
     return it.J.colPivHouseholderQr().solve(-it.r);
   }
   Eigen::Matrix<double, 8, 4> augmented;

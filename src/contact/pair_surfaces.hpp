@@ -1,7 +1,7 @@
 #pragma once
 // The two surfaces of a pair as the common-normal Newton solve sees them, in A's body frame
-// (detector.cpp): a point's gradient and unit normal, the shape form t.S.u = t.H.u / |grad g| on
-// tangent vectors (H the gauge's Hessian: the Jacobian's curvature terms), the radial projection
+// (detector.cpp): a point's gradient and unit normal, the shape operator S u = H u / |grad g| of a
+// tangent vector u (H the gauge's Hessian; contracted with tangents: the Jacobian's curvature terms), the radial projection
 // onto each surface, and the principal curvatures of a solution. One policy per shape-pair kind:
 //   SuperquadricSurfaces  general exponents: Superquadric::derivatives (Hessians formed), B's
 //                         rotated into A's frame
@@ -38,7 +38,7 @@ class SuperquadricSurfaces {
 
   Point onA(const Vec3& p) const { return at(p, f_.A.derivatives(p), Mat3::Identity(), false); }
   Point onB(const Vec3& p) const { return at(p, f_.B.derivatives(f_.toB(p)), f_.R, true); }
-  double shapeForm(const Point& s, const Vec3& t, const Vec3& u) const { return t.dot(s.hessian * u) / s.gradientNorm; }
+  Vec3 shapeOperator(const Point& s, const Vec3& u) const { return s.hessian * u / s.gradientNorm; }
   bool finite(const Point& s) const { return s.hessian.allFinite(); }
   Vec3 projectOnA(const Vec3& y) const { return f_.A.projectRadially(y); }
   Vec3 projectOnB(const Vec3& y) const { return f_.fromB(f_.B.projectRadially(f_.toB(y))); }
@@ -68,9 +68,7 @@ class EllipsoidSurfaces {
 
   Point onA(const Vec3& p) const { return at(p, p, QA_); }
   Point onB(const Vec3& p) const { return at(p, p - c_, QB_); }
-  double shapeForm(const Point& s, const Vec3& t, const Vec3& u) const {
-    return t.dot(*s.Q * u) / (s.gauge * s.gradientNorm);
-  }
+  Vec3 shapeOperator(const Point& s, const Vec3& u) const { return *s.Q * u / (s.gauge * s.gradientNorm); }
   bool finite(const Point& s) const { return std::isfinite(s.gauge) && s.gauge > 0.0; }
   Vec3 projectOnA(const Vec3& y) const { return y / std::sqrt(y.dot(QA_ * y)); }
   Vec3 projectOnB(const Vec3& y) const {
