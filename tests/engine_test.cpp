@@ -347,6 +347,12 @@ TEST(Engine, InteractionOverridesPairRestitutionAndFriction) {
   EXPECT_NEAR(pair.contactModel(0, 0).damping.ratio, -l / std::sqrt(std::numbers::pi * std::numbers::pi + l * l), 1e-15);
 }
 
+TEST(Engine, DetectorToleranceKeySetsTheEnginesSolve) {
+  EXPECT_EQ(buildWorld(loadScene(writeScene("plain", bedScene))).detectorControl().tolerance, DetectorControl{}.tolerance);
+  const World tight = buildWorld(loadScene(writeScene("tight", replaced(bedScene, "seed: 7", "seed: 7\ndetector_tolerance: 1e-10"))));
+  EXPECT_EQ(tight.detectorControl().tolerance, 1e-10);
+}
+
 TEST(Engine, SceneErrorsNameLineKeyAndWhatIsAllowed) {
   const auto withInteraction = [](const std::string& keys) {
     return replaced(bedScene, "  - materials: [glass, glass]\n", "  - materials: [glass, glass]\n" + keys);
@@ -363,6 +369,8 @@ TEST(Engine, SceneErrorsNameLineKeyAndWhatIsAllowed) {
   expectSceneError(withInteraction("    normal: volume_sphere_hertz\n    tangential: elliptic_mindlin\n"),
                    "'interactions[0].tangential': elliptic_mindlin needs a law on the curvatures (allowed here: circular_mindlin)");
   expectSceneError(replaced(bedScene, "seed: 7", "seed: 7\nbroad_phase: octree"), "'broad_phase': allowed: cell_list, aabb_tree");
+  expectSceneError(replaced(bedScene, "seed: 7", "seed: 7\ndetector_tolerance: 0.01"),
+                   "'detector_tolerance': must be in [1e-14, 1e-3] (relative to sqrt(R_vol,A R_vol,B))");
   expectSceneError(replaced(bedScene, "grains: {volume_radius", "grains: {file: no_such_shape.yaml}\n  unused: {volume_radius"),
                    "'shapes.grains.file': cannot open");
   expectSceneError(replaced(bedScene, "{name: settle, duration: 0.2}", "{name: settle, duration: 0.2, move_wall: {wall: 0, path: [[0.1, 1e-3], [0.05, 0]]}}"),

@@ -157,6 +157,7 @@ World buildWorld(const Scene& scene) {
   }
   World world(shapes, materials, scene.domain, skin, scene.broadPhase);
   world.setReorderInterval(scene.reorderEvery);
+  if (scene.detectorTolerance > 0.0) world.setDetectorControl({.tolerance = scene.detectorTolerance});
   for (const InteractionSpec& in : scene.interactions) {
     ContactModel model = world.defaultContactModel(in.materialA, in.materialB);
     model.normal = in.normal;

@@ -270,7 +270,7 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
   const Reader r(path);
   Scene scene;
   scene.path = path;
-  r.allowOnly(root, "", {"seed", "domain", "gravity", "time_step", "time_step_fraction", "impact_velocity", "steps_per_collision", "skin", "broad_phase", "reorder_every", "materials",
+  r.allowOnly(root, "", {"seed", "domain", "gravity", "time_step", "time_step_fraction", "impact_velocity", "steps_per_collision", "skin", "detector_tolerance", "broad_phase", "reorder_every", "materials",
                          "shapes", "interactions", "walls", "particles", "insert", "stages", "output"});
   scene.seed = static_cast<std::uint64_t>(r.integer(root, "seed", "", 0.0, 1e18, 1.0));
 
@@ -304,6 +304,12 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
   if (!(scene.stepsPerCollision >= 10.0)) r.fail(root["steps_per_collision"], "steps_per_collision", "must be >= 10");
   scene.skin = r.number(root, "skin", "", 0.0);
   if (scene.skin < 0.0) r.fail(root["skin"], "skin", "must be >= 0 (m)");
+  if (root["detector_tolerance"]) {
+    scene.detectorTolerance = r.number(root, "detector_tolerance", "", 0.0);
+    if (!(scene.detectorTolerance >= 1e-14 && scene.detectorTolerance <= 1e-3)) {
+      r.fail(root["detector_tolerance"], "detector_tolerance", "must be in [1e-14, 1e-3] (relative to sqrt(R_vol,A R_vol,B))");
+    }
+  }
   scene.broadPhase = r.choice(root, "broad_phase", "", {{"cell_list", BroadPhase::CellList}, {"aabb_tree", BroadPhase::AabbTree}},
                               BroadPhase::CellList);
   scene.reorderEvery = static_cast<int>(r.integer(root, "reorder_every", "", 0.0, 1e6, 20.0));

@@ -44,7 +44,13 @@ struct ContactStatistics {
 
 /// The accuracy knobs of the common-normal detector (an engine-wide choice).
 struct DetectorControl {
-  double tolerance = DetectorSettings{}.tolerance;  ///< DetectorSettings::tolerance (-)
+  /// DetectorSettings::tolerance (-), scene key `detector_tolerance`. The engine's default is
+  /// looser than a single query's: a residual below tol L leaves the normal within ~tol rad and
+  /// the two points within ~tol L of the exact pair, and the overlap (measured along the normal)
+  /// within ~tol^2 L, so forces are off by ~tol in direction and far less in magnitude; a
+  /// warm-started contact that moved less than that in a step needs no Newton iteration (settled
+  /// beds: 0.19 instead of 0.70 iterations per call). Measured in bench/accuracy_bench.cpp.
+  double tolerance = 1e-6;
   bool warmStart = true;  ///< start from the last solution; false: every solve is cold
 };
 

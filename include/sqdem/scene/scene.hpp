@@ -117,6 +117,7 @@ struct Scene {
   double impactVelocity = 0.0;     ///< (m/s) > 0: auto also resolves a Hertz impact at this speed
   double stepsPerCollision = 50.0; ///< ... with this many steps
   double skin = 0.0;               ///< Verlet skin (m); 0: 0.2 x smallest volume radius
+  double detectorTolerance = 0.0;  ///< DetectorControl::tolerance (-); 0: the engine's default
   BroadPhase broadPhase = BroadPhase::CellList;  ///< how candidate pairs are found
   int reorderEvery = 20;           ///< Hilbert re-ordering every N neighbour-list builds (0: off)
   std::vector<NamedMaterial> materials;
