@@ -11,6 +11,9 @@
 namespace sqdem {
 namespace {
 
+/// How many contacts ahead a group kernel prefetches (ContactStore::prefetch).
+constexpr std::ptrdiff_t prefetchDistance = 8;
+
 Pose poseOf(const ParticleStore& p, std::uint32_t i) { return {p.position[i], p.orientation[i]}; }
 
 /// Whether a group computes curvatures from a cache (curvature_cache.hpp) rather than every step.
@@ -139,6 +142,7 @@ void runGroup(const std::vector<std::uint32_t>& members, const ContactModel& pai
 #pragma omp parallel for schedule(dynamic, 64) reduction(+ : calls, iterations, failures, deep, lost, invalid, byStatus[:contactStatusCount])
   for (std::ptrdiff_t m = 0; m < count; ++m) {
     const std::uint32_t k = members[m];
+    if (m + prefetchDistance < count) s.prefetch(members[m + prefetchDistance]);
     ContactGeometry g = detect<Kind>(scene, model, s, k, model.usesCurvatures() && !cached);
     s.status[k] = g.status;
     s.localA[k] = g.localPointA;

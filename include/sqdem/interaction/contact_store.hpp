@@ -87,6 +87,19 @@ struct ContactStore {
     return array != &curvatureCache || withCurvatureCache;
   }
 
+  /// Asks the memory system for every cache line of contact k in every kept array, ahead of a
+  /// kernel's use: a group visits its contacts in ascending order, but the store's ~16 arrays
+  /// are more streams than the hardware prefetcher follows (measured: the loads of a record
+  /// missed the cache in the ellipsoid kernel).
+  void prefetch(std::size_t k) const {
+    forEachArray(*this, [k](const auto& array) {
+      if (k >= array.size()) return;  // an optional array this store does not keep
+      const char* first = reinterpret_cast<const char*>(&array[k]);
+      const char* last = first + sizeof(array[k]) - 1;
+      for (const char* line = first; line < last; line += 64) __builtin_prefetch(line);
+      __builtin_prefetch(last);
+    });
+  }
   /// Room for n contacts in every kept array.
   void reserve(std::size_t n);
   /// Appends a fresh candidate (no geometry, no history).
