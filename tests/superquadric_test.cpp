@@ -1,5 +1,6 @@
 // Superquadric shape (superquadric.hpp; 004 Eq. 15): gauge derivatives against finite
-// differences for n up to 20 and near the coordinate planes, support map, parametrisation,
+// differences for n up to 20 and near the coordinate planes (n1 = n2 takes the single 3-D norm,
+// checked against 004 Eq. 15 like the nested one), support map, parametrisation,
 // bounding radius, and the closed-form volume and inertia (Jaklic et al. 2000) against an
 // independent numerical quadrature of the solid.
 
@@ -20,7 +21,7 @@ std::vector<Superquadric> shapes() {
   return {Superquadric::sphere(1.3),           Superquadric::ellipsoid(1.0, 0.5, 0.3),
           Superquadric(1.0, 0.7, 0.4, 3.5, 2.0), Superquadric(1.0, 1.0, 2.0, 6.0, 6.0),
           Superquadric(0.8, 0.5, 1.2, 10.0, 4.0), Superquadric(1.0, 0.6, 0.9, 20.0, 20.0),
-          Superquadric(1.0, 0.6, 0.9, 2.0, 20.0)};
+          Superquadric(1.0, 0.6, 0.9, 2.0, 20.0),  Superquadric(0.9, 0.7, 1.1, 3.5, 3.5)};
 }
 
 /// Surface points including some within 1e-9 of the coordinate planes.

@@ -73,6 +73,15 @@ NormDerivatives pNormDerivatives(double u, double v, double p) {
   return d;
 }
 
+/// The 3-D p-norm g(u) = (|u1|^p + |u2|^p + |u3|^p)^(1/p): the nested gauge when n1 = n2 = p (one
+/// root instead of two), scaled by the largest |u_i| against overflow.
+double pNorm3(const Vec3& u, double p) {
+  const Vec3 au = u.cwiseAbs();
+  const double m = au.maxCoeff();
+  if (m == 0.0) return 0.0;
+  return m * root(power(au.x() / m, p) + power(au.y() / m, p) + power(au.z() / m, p), p);
+}
+
 /// sgn(x) |x|^e
 double signedPow(double x, double e) { return std::copysign(std::pow(std::abs(x), e), x); }
 
@@ -132,6 +141,7 @@ Superquadric::Superquadric(double a, double b, double c, double n1, double n2)
 double Superquadric::gauge(const Vec3& x) const {
   const Vec3 u = x.cwiseQuotient(halfExtents_);
   if (isEllipsoid()) return u.norm();
+  if (n1_ == n2_) return pNorm3(u, n1_);
   return pNorm(pNorm(u.x(), u.y(), n2_), u.z(), n1_);
 }
 
@@ -146,6 +156,19 @@ GaugeDerivatives Superquadric::derivatives(const Vec3& x) const {
     out.value = g;
     gradU = u / g;
     hessU = (Mat3::Identity() - gradU * gradU.transpose()) / g;
+  } else if (n1_ == n2_) {
+    // g = ||u||_p: with t_i = |u_i| / g, dg/du_i = sgn(u_i) t_i^(p-1) and
+    // g d2g/du_i du_j = (p - 1) (delta_ij t_i^(p-2) - dg/du_i dg/du_j).
+    const double p = n1_, g = pNorm3(u, p);
+    if (g == 0.0) return out;
+    out.value = g;
+    Vec3 curvature;  // t_i^(p-2)
+    for (int i = 0; i < 3; ++i) {
+      const double t = std::abs(u(i)) / g;
+      curvature(i) = power(t, p - 2.0);
+      gradU(i) = std::copysign(curvature(i) * t, u(i));
+    }
+    hessU = (p - 1.0) / g * (Mat3(curvature.asDiagonal()) - gradU * gradU.transpose());
   } else {
     const NormDerivatives in = pNormDerivatives(u.x(), u.y(), n2_);     // s(u, v)
     const NormDerivatives outer = pNormDerivatives(in.h, u.z(), n1_);  // g(s, w)
