@@ -367,9 +367,9 @@ ContactGeometry coldSolve(const PairFrame& f, const Surfaces& surfaces, const Po
 /// Warm solve from the previous points, or cold, of a pair that passed the culls.
 template <class Surfaces>
 ContactGeometry solvePair(const PairFrame& f, const Pose& poseA, const DetectorSettings& settings,
-                          const ContactGeometry* previous) {
+                          const WarmStart* previous) {
   const Surfaces surfaces(f);
-  if (previous != nullptr && previous->converged()) {
+  if (previous != nullptr) {
     // Warm: Newton from the previous points; if that does not settle quickly (a contact that
     // jumps across a flat face), a cold solve from the previous normal instead.
     DetectorSettings quick = settings;
@@ -384,15 +384,14 @@ ContactGeometry solvePair(const PairFrame& f, const Pose& poseA, const DetectorS
 }
 
 ContactGeometry solve(const Superquadric& A, const Pose& poseA, const Superquadric& B,
-                      const Pose& poseB, const DetectorSettings& settings,
-                      const ContactGeometry* previous) {
+                      const Pose& poseB, const DetectorSettings& settings, const WarmStart* previous) {
   if (A.isSphere() && B.isSphere()) return sphereSphere(A, poseA, B, poseB, settings);
 
   const Vec3 centres = poseB.position - poseA.position;
   const Mat3 RA = poseA.rotation(), RB = poseB.rotation();
   // The culls are for pairs that may be apart; a pair that touched at the last solve is not
   // further apart than the cut-off one step later.
-  const bool touched = previous != nullptr && previous->converged() && previous->overlap >= 0.0;
+  const bool touched = previous != nullptr && previous->overlap >= 0.0;
   if (!touched) {
     const double sphereGap = centres.norm() - A.boundingRadius() - B.boundingRadius();
     if (sphereGap > settings.cutoff) return separated(sphereGap);
@@ -413,9 +412,16 @@ ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const Su
 }
 
 ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const Superquadric& B,
+                              const Pose& poseB, const DetectorSettings& settings, const WarmStart& previous) {
+  return solve(A, poseA, B, poseB, settings, &previous);
+}
+
+ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const Superquadric& B,
                               const Pose& poseB, const DetectorSettings& settings,
                               const ContactGeometry& previous) {
-  return solve(A, poseA, B, poseB, settings, &previous);
+  if (!previous.converged()) return solve(A, poseA, B, poseB, settings, nullptr);
+  const WarmStart warm{previous.localPointA, previous.localPointB, previous.overlap};
+  return solve(A, poseA, B, poseB, settings, &warm);
 }
 
 ContactGeometry detectSpheres(const Vec3& centreA, double rA, const Vec3& centreB, double rB, double cutoff) {

@@ -24,8 +24,8 @@ bool cachesCurvatures(const ContactModel& model, PairKind kind) {
 /// The pair kind's detector for contact k, warm-started from the store; the curvatures only
 /// when asked for (a law that does not use them, or takes them from its cache, does not pay).
 template <PairKind Kind>
-ContactGeometry detect(const InteractionScene& scene, const ContactModel& model, ContactStore& s, std::uint32_t k,
-                       bool curvatures) {
+ContactGeometry detect(const InteractionScene& scene, const std::vector<double>& speedBound, const ContactModel& model,
+                       ContactStore& s, std::uint32_t k, bool curvatures) {
   const ParticleStore& p = scene.particles;
   const std::uint32_t a = s.a[k], b = s.b[k];
   const Superquadric& A = scene.shapes[p.shape[a]];
@@ -42,19 +42,12 @@ ContactGeometry detect(const InteractionScene& scene, const ContactModel& model,
     } else {
       // A pair found separated stays so until the particles could have moved by its gap.
       if (s.separation[k] > 0.0) {
-        s.separation[k] -= scene.dt * (p.velocity[a].norm() + p.velocity[b].norm() +
-                                       p.angularVelocity[a].norm() * scene.boundingRadius[a] +
-                                       p.angularVelocity[b].norm() * scene.boundingRadius[b]);
+        s.separation[k] -= scene.dt * (speedBound[a] + speedBound[b]);
         if (s.separation[k] > model.reach) return ContactGeometry{};  // Separated, no iterations
       }
       ContactGeometry g;
       if (s.status[k] == ContactStatus::Converged && scene.detector.warmStart) {
-        ContactGeometry previous;
-        previous.status = ContactStatus::Converged;
-        previous.localPointA = s.localA[k];
-        previous.localPointB = s.localB[k];
-        previous.overlap = s.overlap[k];
-        g = detectContact(A, poseOf(p, a), B, poseB, settings, previous);
+        g = detectContact(A, poseOf(p, a), B, poseB, settings, WarmStart{s.localA[k], s.localB[k], s.overlap[k]});
       } else {
         g = detectContact(A, poseOf(p, a), B, poseB, settings);
       }
@@ -132,7 +125,8 @@ ContactModel asRun(ContactModel model, PairKind kind) {
 /// One group: detect, then (within the law's range) the law; the step's statistics.
 template <PairKind Kind, NormalLawComponent Law>
 void runGroup(const std::vector<std::uint32_t>& members, const ContactModel& pairModel, const Law& law,
-              const InteractionScene& scene, ContactStore& s, ContactStatistics& statistics) {
+              const InteractionScene& scene, const std::vector<double>& speedBound, ContactStore& s,
+              ContactStatistics& statistics) {
   const ContactModel model = asRun(pairModel, Kind);
   const bool cached = cachesCurvatures(model, Kind);
   const double cosHalfAngle = std::cos(0.5 * model.curvatureTolerance);
@@ -143,7 +137,7 @@ void runGroup(const std::vector<std::uint32_t>& members, const ContactModel& pai
   for (std::ptrdiff_t m = 0; m < count; ++m) {
     const std::uint32_t k = members[m];
     if (m + prefetchDistance < count) s.prefetch(members[m + prefetchDistance]);
-    ContactGeometry g = detect<Kind>(scene, model, s, k, model.usesCurvatures() && !cached);
+    ContactGeometry g = detect<Kind>(scene, speedBound, model, s, k, model.usesCurvatures() && !cached);
     s.status[k] = g.status;
     s.localA[k] = g.localPointA;
     s.localB[k] = g.localPointB;
@@ -198,23 +192,31 @@ void runGroup(const std::vector<std::uint32_t>& members, const ContactModel& pai
 
 template <NormalLawComponent Law>
 void runGroup(PairKind kind, const std::vector<std::uint32_t>& members, const ContactModel& model, const Law& law,
-              const InteractionScene& scene, ContactStore& s, ContactStatistics& statistics) {
+              const InteractionScene& scene, const std::vector<double>& speedBound, ContactStore& s,
+              ContactStatistics& statistics) {
   switch (kind) {
-    case PairKind::SphereSphere: return runGroup<PairKind::SphereSphere>(members, model, law, scene, s, statistics);
-    case PairKind::EllipsoidPair: return runGroup<PairKind::EllipsoidPair>(members, model, law, scene, s, statistics);
+    case PairKind::SphereSphere: return runGroup<PairKind::SphereSphere>(members, model, law, scene, speedBound, s, statistics);
+    case PairKind::EllipsoidPair: return runGroup<PairKind::EllipsoidPair>(members, model, law, scene, speedBound, s, statistics);
     case PairKind::SuperquadricPair:
-      return runGroup<PairKind::SuperquadricPair>(members, model, law, scene, s, statistics);
-    case PairKind::SphereWall: return runGroup<PairKind::SphereWall>(members, model, law, scene, s, statistics);
-    case PairKind::ParticleWall: return runGroup<PairKind::ParticleWall>(members, model, law, scene, s, statistics);
+      return runGroup<PairKind::SuperquadricPair>(members, model, law, scene, speedBound, s, statistics);
+    case PairKind::SphereWall: return runGroup<PairKind::SphereWall>(members, model, law, scene, speedBound, s, statistics);
+    case PairKind::ParticleWall: return runGroup<PairKind::ParticleWall>(members, model, law, scene, speedBound, s, statistics);
   }
 }
 
 }  // namespace
 
 void Interactions::compute(const InteractionScene& scene, ContactStatistics& statistics) {
+  const ParticleStore& p = scene.particles;
+  speedBound_.resize(p.size());
+  const auto n = static_cast<std::ptrdiff_t>(p.size());
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t i = 0; i < n; ++i) {
+    speedBound_[i] = p.velocity[i].norm() + p.angularVelocity[i].norm() * scene.boundingRadius[i];
+  }
   for (const Group& group : groups_) {
     const ContactModel& model = scene.models[group.model];
-    std::visit([&](const auto& law) { runGroup(group.kind, group.members, model, law, scene, store_, statistics); },
+    std::visit([&](const auto& law) { runGroup(group.kind, group.members, model, law, scene, speedBound_, store_, statistics); },
                model.normal);
   }
 }

@@ -125,7 +125,7 @@ std::size_t Interactions::bytes() const {
   ContactStore::forEachArray(store_, [&](const auto& array) { total += array.capacity() * sizeof(array[0]); });
   for (const Group& g : groups_) total += g.members.capacity() * sizeof(std::uint32_t);
   total += (involvementStart_.capacity() + involvement_.capacity() + interacting_.capacity()) * sizeof(std::uint32_t);
-  return total;
+  return total + speedBound_.capacity() * sizeof(double);
 }
 
 }  // namespace sqdem

@@ -17,10 +17,9 @@ Vec3 MindlinSpring::force(const NormalContact& c, const Vec3& majorAxis, const V
     const double k = 8.0 * effectiveShear * std::sqrt(area / std::numbers::pi);
     const double eta = damping.coefficient(mass, k);
     Vec3 Ft = -(k * spring + eta * vt);
-    const double magnitude = Ft.norm();
-    if (magnitude > limit) {
+    if (Ft.squaredNorm() > limit * limit) {
       // Slip: the spring shrinks to what carries the Coulomb force.
-      Ft *= limit / magnitude;
+      Ft *= limit / Ft.norm();
       spring = k > 0.0 ? Vec3(-(Ft + eta * vt) / k) : Vec3::Zero();
     }
     return Ft;
@@ -34,9 +33,8 @@ Vec3 MindlinSpring::force(const NormalContact& c, const Vec3& majorAxis, const V
   const double etaU = damping.coefficient(mass, ku), etaV = damping.coefficient(mass, kv);
   const double vu = vt.dot(u), vv = vt.dot(v);
   Vec3 Ft = -(ku * spring.dot(u) + etaU * vu) * u - (kv * spring.dot(v) + etaV * vv) * v;
-  const double magnitude = Ft.norm();
-  if (magnitude > limit) {
-    Ft *= limit / magnitude;
+  if (Ft.squaredNorm() > limit * limit) {
+    Ft *= limit / Ft.norm();
     spring = ku > 0.0 && kv > 0.0 ? Vec3(-(Ft.dot(u) + etaU * vu) / ku * u - (Ft.dot(v) + etaV * vv) / kv * v) : Vec3::Zero();
   }
   return Ft;

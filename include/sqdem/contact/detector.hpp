@@ -46,8 +46,18 @@ struct DetectorSettings {
 ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const Superquadric& B,
                               const Pose& poseB, const DetectorSettings& settings = {});
 
-/// Warm solve: starts from previous.localPointA/B (body frames) when previous converged,
-/// otherwise falls back to a cold solve.
+/// What a warm solve needs of the pair's last converged solve.
+struct WarmStart {
+  Vec3 localPointA;  ///< on A, A's body frame (m)
+  Vec3 localPointB;  ///< on B, B's body frame (m)
+  double overlap;    ///< (m); >= 0: the pair touched, so the culls are skipped
+};
+
+/// Warm solve: Newton from the previous points; a cold solve if that does not settle quickly.
+ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const Superquadric& B,
+                              const Pose& poseB, const DetectorSettings& settings, const WarmStart& previous);
+
+/// Warm solve from a previous result when it converged, otherwise a cold solve.
 ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const Superquadric& B,
                               const Pose& poseB, const DetectorSettings& settings,
                               const ContactGeometry& previous);

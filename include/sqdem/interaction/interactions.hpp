@@ -101,7 +101,7 @@ class Interactions {
   }
   const ContactStore& store() const { return store_; }
   std::size_t actingCount() const { return interacting_.size(); }
-  /// Bytes held per candidate contact (store, groups, particle index) and in all.
+  /// Bytes held (store, groups, particle index, per-particle speed bounds).
   std::size_t bytes() const;
 
   void writeState(CheckpointWriter& out) const;
@@ -125,6 +125,9 @@ class Interactions {
   std::vector<std::uint32_t> involvementStart_;  ///< particle i's contacts: involvement_[start[i], start[i+1])
   std::vector<std::uint32_t> involvement_;       ///< contact index, | bodyBFlag where i is body B
   std::vector<std::uint32_t> interacting_;       ///< indices of the force-carrying contacts
+  /// Per particle, this step: |v| + |w| R_bound (m/s), how fast any point of it moves (a
+  /// separated pair's gap bound shrinks by dt times the sum of its two).
+  std::vector<double> speedBound_;
 };
 
 }  // namespace sqdem
