@@ -3,7 +3,8 @@
 // From a settled bed (the scene's stages, run once with the default settings), every accuracy
 // knob of the engine is varied alone: detector tolerance, warm starts, e^2 (exact, tabulated,
 // explicit), the curvature cache tolerance, the full elliptic law vs Hertz on volume-equivalent
-// spheres, the time step. Each variant runs `steps` steps of the bed (1 thread) and is measured:
+// spheres, the time step. Each variant runs `steps` steps of the bed (1 thread; the fastest of
+// three identical runs is timed) and is measured:
 //   cost    wall time per particle-step, and per particle and simulated millisecond (the time step
 //           changes how many steps a protocol needs);
 //   force   contact force error on the same configuration: a copy of the variant's world before
@@ -22,6 +23,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -44,6 +46,9 @@ struct Settings {
   bool fullLaw = true;
   double timeStepFactor = 1.0;
 };
+
+/// Timed runs per variant: this machine's timings scatter by ±30 % from run to run.
+constexpr int timingRepeats = 3;
 
 struct Variant {
   std::string name;
@@ -124,7 +129,7 @@ int main(int argc, char** argv) {
     std::snprintf(name, sizeof name, "%s%g", what, value);
     return std::string(name);
   };
-  for (const double t : {1e-11, 1e-8, 1e-6}) vary(named("detector tolerance ", t), [&](Settings& s) { s.detectorTolerance = t; });
+  for (const double t : {1e-11, 1e-10, 1e-8, 1e-4}) vary(named("detector tolerance ", t), [&](Settings& s) { s.detectorTolerance = t; });
   vary("warm start off", [](Settings& s) { s.warmStart = false; });
   vary("e^2 exact", [](Settings& s) { s.eccentricity = EccentricityMethod::Exact; });
   vary("e^2 explicit", [](Settings& s) { s.eccentricity = EccentricityMethod::Explicit; });
@@ -141,12 +146,17 @@ int main(int argc, char** argv) {
               "F err p99", "F err max", "d(phi)", "d(Z)", "d(p)/p");
   Bulk referenceBulk{};
   for (const Variant& v : variants) {
-    World w = settled;
-    apply(v.settings, w, dt);
+    // The same (deterministic) run timingRepeats times; its cost is the fastest of them.
     const int n = static_cast<int>(std::lround(steps / v.settings.timeStepFactor));
-    const auto t0 = std::chrono::steady_clock::now();
-    for (int s = 0; s < n - 1; ++s) w.step();
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    World w = settled;
+    double seconds = std::numeric_limits<double>::infinity();
+    for (int r = 0; r < timingRepeats; ++r) {
+      w = settled;
+      apply(v.settings, w, dt);
+      const auto t0 = std::chrono::steady_clock::now();
+      for (int s = 0; s < n - 1; ++s) w.step();
+      seconds = std::min(seconds, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    }
     World check = w;
     w.step();
     apply(reference, check, dt);
