@@ -1,9 +1,13 @@
 // Common-normal detector (detector.hpp): closed forms, invariances (swap, rigid motion),
-// planes, culling, warm starts and degenerate input.
+// planes, culling, warm starts and degenerate input; the Newton step's 4 x 4 LU against Eigen's.
 
 #include <gtest/gtest.h>
 
+#include <Eigen/LU>
 #include <cmath>
+#include <random>
+
+#include "contact/pivoted_lu.hpp"
 
 #include "sqdem/contact/detector.hpp"
 #include "support/random_pairs.hpp"
@@ -12,6 +16,27 @@ namespace sqdem {
 namespace {
 
 Pose at(const Vec3& position, const Quat& q = Quat::Identity()) { return {position, q}; }
+
+// The hand-written fixed-size LU (pivoted_lu.hpp) solves as Eigen's PartialPivLU does, pivots
+// included (the same row exchanges), and flags a singular matrix as not well-conditioned.
+TEST(Detector, NewtonStepLuMatchesEigen) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int trial = 0; trial < 200; ++trial) {
+    const Eigen::Matrix4d m = Eigen::Matrix4d::NullaryExpr([&] { return u(rng); });
+    const Eigen::Vector4d b = Eigen::Vector4d::NullaryExpr([&] { return u(rng); });
+    const detail::PivotedLu<4> lu(m);
+    const Eigen::PartialPivLU<Eigen::Matrix4d> eigen(m);
+    const Eigen::Vector4d x = lu.solve(b), reference = eigen.solve(b);
+    EXPECT_LE((x - reference).norm(), 1e-12 * (1.0 + reference.norm())) << m;
+    EXPECT_LE((m * x - b).norm(), 1e-13 * (m.norm() * x.norm() + b.norm()));  // backward stable
+    const Eigen::Vector4d pivots = eigen.matrixLU().diagonal().cwiseAbs();
+    EXPECT_EQ(lu.wellConditioned(1e-6), pivots.minCoeff() > 1e-6 * pivots.maxCoeff());
+  }
+  Eigen::Matrix4d singular = Eigen::Matrix4d::Identity();
+  singular.row(3) = singular.row(1) + 2.0 * singular.row(2);
+  EXPECT_FALSE(detail::PivotedLu<4>(singular).wellConditioned(1e-6));
+}
 
 TEST(Detector, SphereSphereClosedForm) {
   const Superquadric A = Superquadric::sphere(1.0), B = Superquadric::sphere(0.5);

@@ -1,8 +1,9 @@
 #pragma once
 // The two surfaces of a pair as the common-normal Newton solve sees them, in A's body frame
 // (detector.cpp): a point's gradient and unit normal, the shape operator S u = H u / |grad g| of a
-// tangent vector u (H the gauge's Hessian; contracted with tangents: the Jacobian's curvature terms), the radial projection
-// onto each surface, and the principal curvatures of a solution. One policy per shape-pair kind:
+// tangent vector u (H the gauge's Hessian; dotted with tangents, the Jacobian's curvature terms),
+// the radial projection onto each surface, and the principal curvatures of a solution. One
+// policy per shape-pair kind:
 //   SuperquadricSurfaces  general exponents: Superquadric::derivatives (Hessians formed), B's
 //                         rotated into A's frame
 //   EllipsoidSurfaces     n1 = n2 = 2: g(x) = sqrt((x - c)' Q (x - c)) with Q = R diag(1/a^2) R',
