@@ -28,9 +28,6 @@ void freeRotation(int k, double t, double inertia, Vec4& q, Vec4& p) {
 /// = 2 (0, L) ⊗ q), so the kick and the free rotor need no rotation into the body frame.
 bool isotropic(const Vec3& I) { return I.x() == I.y() && I.y() == I.z(); }
 
-Quat asQuat(const Vec4& v) { return {v(0), v(1), v(2), v(3)}; }
-Vec4 asVector(const Quat& q) { return {q.w(), q.x(), q.y(), q.z()}; }
-
 }  // namespace
 
 void kick(ParticleStore& particles, std::size_t i, double halfStep) {

@@ -1,12 +1,6 @@
 #include "sqdem/dynamics/particle_store.hpp"
 
 namespace sqdem {
-namespace {
-
-Vec4 asVector(const Quat& q) { return {q.w(), q.x(), q.y(), q.z()}; }
-Quat asQuat(const Vec4& v) { return Quat(v(0), v(1), v(2), v(3)); }
-
-}  // namespace
 
 std::size_t ParticleStore::add(std::uint32_t shapeIndex, std::uint32_t materialIndex, const Vec3& centre,
                                const Quat& q, double particleMass, const Vec3& principalInertia) {
