@@ -188,18 +188,34 @@ ContactGeometry separated(double gapLowerBound) {
   return g;
 }
 
+/// A round contact as a full ContactGeometry (no body-frame points or curvatures yet).
+ContactGeometry asGeometry(const RoundContact& c) {
+  ContactGeometry g;
+  g.status = c.status;
+  g.overlap = c.overlap;
+  g.normal = c.normal;
+  g.pointA = c.pointA;
+  g.pointB = c.pointB;
+  return g;
+}
+
+/// A sphere's curvatures at the point with outward normal n: 1/r in every direction.
+PrincipalCurvatures sphereCurvatures(const Vec3& n, double r) {
+  PrincipalCurvatures c = PrincipalCurvatures::flat(n);
+  c.k1 = c.k2 = 1.0 / r;
+  return c;
+}
+
 ContactGeometry sphereSphere(const Superquadric& A, const Pose& poseA, const Superquadric& B,
                              const Pose& poseB, const DetectorSettings& settings) {
   const double rA = A.a(), rB = B.a();
-  ContactGeometry g = detectSpheres(poseA.position, rA, poseB.position, rB, settings.cutoff);
+  ContactGeometry g = asGeometry(detectSpheres(poseA.position, rA, poseB.position, rB, settings.cutoff));
   if (!g.converged()) return g;
   g.localPointA = poseA.toBody(g.pointA);
   g.localPointB = poseB.toBody(g.pointB);
   if (!settings.curvatures) return g;
-  g.curvatureA = PrincipalCurvatures::flat(g.normal);
-  g.curvatureA.k1 = g.curvatureA.k2 = 1.0 / rA;
-  g.curvatureB = PrincipalCurvatures::flat(-g.normal);
-  g.curvatureB.k1 = g.curvatureB.k2 = 1.0 / rB;
+  g.curvatureA = sphereCurvatures(g.normal, rA);
+  g.curvatureB = sphereCurvatures(-g.normal, rB);
   return g;
 }
 
@@ -424,27 +440,17 @@ ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const Su
   return solve(A, poseA, B, poseB, settings, &warm);
 }
 
-ContactGeometry detectSpheres(const Vec3& centreA, double rA, const Vec3& centreB, double rB, double cutoff) {
-  const Vec3 d = centreB - centreA;
-  const double distance = d.norm();
-  if (distance - rA - rB > cutoff) return separated(distance - rA - rB);
-  ContactGeometry g;
-  if (!(distance > 0.0)) {  // coincident centres: any direction separates them by rA + rB
-    g.status = ContactStatus::Degenerate;
-    g.normal = Vec3::UnitZ();
-    g.overlap = rA + rB;
-  } else {
-    g.status = ContactStatus::Converged;
-    g.normal = d / distance;
-    g.overlap = rA + rB - distance;
-  }
-  g.pointA = centreA + rA * g.normal;
-  g.pointB = centreB - rB * g.normal;
-  return g;
-}
-
 ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const Plane& wall,
                               const DetectorSettings& settings) {
+  if (A.isSphere()) {
+    ContactGeometry g = asGeometry(detectSphereWall(poseA.position, A.a(), wall, settings.cutoff));
+    if (!g.converged()) return g;
+    g.localPointA = poseA.toBody(g.pointA);
+    g.localPointB = g.pointB;
+    if (settings.curvatures) g.curvatureA = sphereCurvatures(g.normal, A.a());
+    g.curvatureB = PrincipalCurvatures::flat(wall.normal);
+    return g;
+  }
   const Vec3 n = -wall.normal;
   const Mat3 RA = poseA.rotation();
   ContactGeometry g;

@@ -9,8 +9,6 @@
 
 namespace sqdem::detail {
 
-/// What the normal law sees of the contact: relative radii and factors from the curvatures, or
-/// the volume-equivalent spheres' circle (Ri = Rj = R*, Rc = R*/2).
 /// E* and r_IJ of the contact (radii and factors left to the caller).
 inline NormalContact sizedContact(const ContactModel& model, const ContactKinematics& motion) {
   NormalContact c;
@@ -19,21 +17,27 @@ inline NormalContact sizedContact(const ContactModel& model, const ContactKinema
   return c;
 }
 
+/// The contact of the volume-equivalent spheres: a circle, Ri = Rj = R*, Rc = R*/2.
+inline NormalContact circularContact(const ContactModel& model, const ContactKinematics& motion) {
+  NormalContact c = sizedContact(model, motion);
+  const double Rstar = motion.volumeRadiusB > 0.0
+                           ? motion.volumeRadiusA * motion.volumeRadiusB / (motion.volumeRadiusA + motion.volumeRadiusB)
+                           : motion.volumeRadiusA;
+  c.radii = {.Ri = Rstar, .Rj = Rstar, .cosOmega = 1.0, .Rc = 0.5 * Rstar};
+  c.factors = circularHertzFactors();
+  return c;
+}
+
+/// What the normal law sees of the contact: relative radii and factors from the curvatures, or
+/// the volume-equivalent spheres' circle.
 inline NormalContact normalContact(const ContactModel& model, const ContactGeometry& geometry,
                                    const ContactKinematics& motion) {
+  if (!model.usesCurvatures()) return circularContact(model, motion);
   NormalContact c = sizedContact(model, motion);
-  if (model.usesCurvatures()) {
-    const double reference = motion.volumeRadiusB > 0.0 ? std::sqrt(motion.volumeRadiusA * motion.volumeRadiusB)
-                                                        : motion.volumeRadiusA;
-    c.radii = relativeRadii(geometry.curvatureA, geometry.curvatureB, model.capFactor * reference);
-    c.factors = hertzFactors(c.radii.ratio(), model.eccentricity);
-  } else {
-    const double Rstar = motion.volumeRadiusB > 0.0 ? motion.volumeRadiusA * motion.volumeRadiusB /
-                                                          (motion.volumeRadiusA + motion.volumeRadiusB)
-                                                    : motion.volumeRadiusA;
-    c.radii = {.Ri = Rstar, .Rj = Rstar, .cosOmega = 1.0, .Rc = 0.5 * Rstar};
-    c.factors = circularHertzFactors();
-  }
+  const double reference = motion.volumeRadiusB > 0.0 ? std::sqrt(motion.volumeRadiusA * motion.volumeRadiusB)
+                                                      : motion.volumeRadiusA;
+  c.radii = relativeRadii(geometry.curvatureA, geometry.curvatureB, model.capFactor * reference);
+  c.factors = hertzFactors(c.radii.ratio(), model.eccentricity);
   return c;
 }
 

@@ -1,6 +1,7 @@
 // The fused detect-then-law kernels: one instantiation per pair kind and normal law type, run
 // over a group's contacts with the law fixed for the whole loop.
 
+#include <algorithm>
 #include <cmath>
 #include <variant>
 
@@ -21,6 +22,19 @@ bool cachesCurvatures(const ContactModel& model, PairKind kind) {
   return !round(kind) && model.usesCurvatures() && model.curvatureTolerance > 0.0;
 }
 
+/// A round kind's closed form for contact k (round_contact.hpp).
+template <PairKind Kind>
+RoundContact detectRound(const InteractionScene& scene, const ContactStore& s, std::uint32_t k) {
+  const ParticleStore& p = scene.particles;
+  const std::uint32_t a = s.a[k], b = s.b[k];
+  const double rA = scene.shapes[p.shape[a]].a();
+  if constexpr (withWall(Kind)) {
+    return detectSphereWall(p.position[a], rA, scene.walls[b & ~wallFlag].plane, scene.skin);
+  } else {
+    return detectSpheres(p.position[a], rA, p.position[b] + s.shift[k], scene.shapes[p.shape[b]].a(), scene.skin);
+  }
+}
+
 /// The pair kind's detector for contact k, warm-started from the store; the curvatures only
 /// when asked for (a law that does not use them, or takes them from its cache, does not pay).
 template <PairKind Kind>
@@ -35,25 +49,21 @@ ContactGeometry detect(const InteractionScene& scene, const std::vector<double>&
   if constexpr (withWall(Kind)) {
     return detectContact(A, poseOf(p, a), scene.walls[b & ~wallFlag].plane, settings);
   } else {
+    // A pair found separated stays so until the particles could have moved by its gap.
+    if (s.separation[k] > 0.0) {
+      s.separation[k] -= scene.dt * (speedBound[a] + speedBound[b]);
+      if (s.separation[k] > model.reach) return ContactGeometry{};  // Separated, no iterations
+    }
     const Superquadric& B = scene.shapes[p.shape[b]];
     const Pose poseB{p.position[b] + s.shift[k], p.orientation[b]};
-    if constexpr (Kind == PairKind::SphereSphere) {  // closed form: cheaper than any cull
-      return detectSpheres(p.position[a], A.a(), poseB.position, B.a(), settings.cutoff);
+    ContactGeometry g;
+    if (s.status[k] == ContactStatus::Converged && scene.detector.warmStart) {
+      g = detectContact(A, poseOf(p, a), B, poseB, settings, WarmStart{s.localA[k], s.localB[k], s.overlap[k]});
     } else {
-      // A pair found separated stays so until the particles could have moved by its gap.
-      if (s.separation[k] > 0.0) {
-        s.separation[k] -= scene.dt * (speedBound[a] + speedBound[b]);
-        if (s.separation[k] > model.reach) return ContactGeometry{};  // Separated, no iterations
-      }
-      ContactGeometry g;
-      if (s.status[k] == ContactStatus::Converged && scene.detector.warmStart) {
-        g = detectContact(A, poseOf(p, a), B, poseB, settings, WarmStart{s.localA[k], s.localB[k], s.overlap[k]});
-      } else {
-        g = detectContact(A, poseOf(p, a), B, poseB, settings);
-      }
-      s.separation[k] = g.status == ContactStatus::Separated ? -g.overlap : 0.0;
-      return g;
+      g = detectContact(A, poseOf(p, a), B, poseB, settings);
     }
+    s.separation[k] = g.status == ContactStatus::Separated ? -g.overlap : 0.0;
+    return g;
   }
 }
 
@@ -122,7 +132,8 @@ ContactModel asRun(ContactModel model, PairKind kind) {
   return model;
 }
 
-/// One group: detect, then (within the law's range) the law; the step's statistics.
+/// One group: detect, then (within the law's range) the law; the step's statistics. Called by every
+/// thread of the computation's parallel region: the contacts are shared out among them.
 template <PairKind Kind, NormalLawComponent Law>
 void runGroup(const std::vector<std::uint32_t>& members, const ContactModel& pairModel, const Law& law,
               const InteractionScene& scene, const std::vector<double>& speedBound, ContactStore& s,
@@ -133,14 +144,24 @@ void runGroup(const std::vector<std::uint32_t>& members, const ContactModel& pai
   long long calls = 0, iterations = 0, failures = 0, deep = 0, lost = 0, invalid = 0;
   long long byStatus[contactStatusCount] = {};
   const auto count = static_cast<std::ptrdiff_t>(members.size());
-#pragma omp parallel for schedule(dynamic, 64) reduction(+ : calls, iterations, failures, deep, lost, invalid, byStatus[:contactStatusCount])
+#pragma omp for schedule(dynamic, 64) nowait
   for (std::ptrdiff_t m = 0; m < count; ++m) {
     const std::uint32_t k = members[m];
     if (m + prefetchDistance < count) s.prefetch(members[m + prefetchDistance]);
-    ContactGeometry g = detect<Kind>(scene, speedBound, model, s, k, model.usesCurvatures() && !cached);
+    // Round kinds solve a RoundContact (no body-frame points, no curvatures), the others a
+    // ContactGeometry: both carry what the store keeps of the geometry.
+    auto g = [&] {
+      if constexpr (round(Kind)) {
+        return detectRound<Kind>(scene, s, k);
+      } else {
+        return detect<Kind>(scene, speedBound, model, s, k, model.usesCurvatures() && !cached);
+      }
+    }();
     s.status[k] = g.status;
-    s.localA[k] = g.localPointA;
-    s.localB[k] = g.localPointB;
+    if constexpr (!round(Kind)) {
+      s.localA[k] = g.localPointA;
+      s.localB[k] = g.localPointB;
+    }
     s.normal[k] = g.normal;
     s.overlap[k] = g.overlap;
     s.point[k] = 0.5 * (g.pointA + g.pointB);
@@ -153,8 +174,14 @@ void runGroup(const std::vector<std::uint32_t>& members, const ContactModel& pai
     ContactForce force{.acting = false};
     if (g.converged() && g.overlap > -range) {
       const ContactKinematics motion = kinematics<Kind>(scene, s, k, s.point[k]);
-      const LawGeometry view = cached ? cachedLawGeometry<Kind>(scene, model, s, k, g, motion, cosHalfAngle)
-                                      : detail::lawGeometry(model, g, motion);
+      const LawGeometry view = [&] {
+        if constexpr (round(Kind)) {
+          return LawGeometry{g.overlap, g.normal, detail::circularContact(model, motion), Vec3::Zero()};
+        } else {
+          return cached ? cachedLawGeometry<Kind>(scene, model, s, k, g, motion, cosHalfAngle)
+                        : detail::lawGeometry(model, g, motion);
+        }
+      }();
       force = detail::contactForce(model, law, view, motion, history, scene.dt);
       invalid += !force.valid;
     } else {
@@ -172,7 +199,7 @@ void runGroup(const std::vector<std::uint32_t>& members, const ContactModel& pai
     s.load[k] = {force.normal, force.normalDamping, force.normalStiffness, force.area};
     if constexpr (!withWall(Kind)) {
       ++calls;
-      iterations += g.iterations;
+      if constexpr (!round(Kind)) iterations += g.iterations;
     }
     if (g.status != ContactStatus::Converged && g.status != ContactStatus::Separated) {
       ++failures;
@@ -181,13 +208,16 @@ void runGroup(const std::vector<std::uint32_t>& members, const ContactModel& pai
     if (!g.converged() && s.separation[k] <= 0.0) s.reset(k);  // nothing to warm-start or cull
     if (force.acting && g.overlap > 0.5 * scene.shapes[scene.particles.shape[s.a[k]]].volumeEquivalentRadius()) ++deep;
   }
-  statistics.detectorCalls += calls;
-  statistics.detectorIterations += iterations;
-  statistics.detectorFailures += failures;
-  for (int k = 0; k < contactStatusCount; ++k) statistics.failuresByStatus[k] += byStatus[k];
-  statistics.deepOverlaps += deep;
-  statistics.lostAdhesions += lost;
-  statistics.lawFailures += invalid;
+#pragma omp critical(sqdem_contact_statistics)
+  {
+    statistics.detectorCalls += calls;
+    statistics.detectorIterations += iterations;
+    statistics.detectorFailures += failures;
+    for (int k = 0; k < contactStatusCount; ++k) statistics.failuresByStatus[k] += byStatus[k];
+    statistics.deepOverlaps += deep;
+    statistics.lostAdhesions += lost;
+    statistics.lawFailures += invalid;
+  }
 }
 
 template <NormalLawComponent Law>
@@ -208,16 +238,25 @@ void runGroup(PairKind kind, const std::vector<std::uint32_t>& members, const Co
 
 void Interactions::compute(const InteractionScene& scene, ContactStatistics& statistics) {
   const ParticleStore& p = scene.particles;
-  speedBound_.resize(p.size());
   const auto n = static_cast<std::ptrdiff_t>(p.size());
-#pragma omp parallel for schedule(static)
-  for (std::ptrdiff_t i = 0; i < n; ++i) {
-    speedBound_[i] = p.velocity[i].norm() + p.angularVelocity[i].norm() * scene.boundingRadius[i];
-  }
-  for (const Group& group : groups_) {
-    const ContactModel& model = scene.models[group.model];
-    std::visit([&](const auto& law) { runGroup(group.kind, group.members, model, law, scene, speedBound_, store_, statistics); },
-               model.normal);
+  // Only the iterative kinds cull separated pairs by the particles' speed bounds.
+  const bool bounded = std::ranges::any_of(groups_, [](const Group& g) { return !round(g.kind) && !withWall(g.kind); });
+  speedBound_.resize(bounded ? p.size() : 0);
+  // One parallel region per computation: the groups' loops do not wait for each other (each
+  // writes only its own contacts), so a step pays one fork and one join here.
+#pragma omp parallel
+  {
+    if (bounded) {
+#pragma omp for schedule(static)
+      for (std::ptrdiff_t i = 0; i < n; ++i) {
+        speedBound_[i] = p.velocity[i].norm() + p.angularVelocity[i].norm() * scene.boundingRadius[i];
+      }
+    }
+    for (const Group& group : groups_) {
+      const ContactModel& model = scene.models[group.model];
+      std::visit([&](const auto& law) { runGroup(group.kind, group.members, model, law, scene, speedBound_, store_, statistics); },
+                 model.normal);
+    }
   }
 }
 

@@ -20,11 +20,13 @@
 // not solved: they get status Degenerate, with the global minimum of the support gap (the
 // penetration depth of the Minkowski difference) as overlap and its normal and support points.
 //
-// Closed forms: sphere-sphere, and every superquadric-plane pair (support map).
+// Closed forms: sphere-sphere and sphere-plane (round_contact.hpp), and every
+// superquadric-plane pair (support map).
 // Before any iteration, pairs further apart than the cut-off are culled by bounding spheres and
 // oriented boxes. The result is never NaN/inf: an unresolved pair is a status (contact_geometry.hpp).
 
 #include "sqdem/contact/contact_geometry.hpp"
+#include "sqdem/contact/round_contact.hpp"
 #include "sqdem/geometry/plane.hpp"
 #include "sqdem/geometry/pose.hpp"
 #include "sqdem/geometry/superquadric.hpp"
@@ -61,10 +63,6 @@ ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const Su
 ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const Superquadric& B,
                               const Pose& poseB, const DetectorSettings& settings,
                               const ContactGeometry& previous);
-
-/// Two spheres of centres cA, cB and radii rA, rB: closed form, without body-frame points or
-/// curvatures (both are those of spheres; the engine's round contacts need neither).
-ContactGeometry detectSpheres(const Vec3& centreA, double rA, const Vec3& centreB, double rB, double cutoff);
 
 /// Particle A against a wall (body B): closed form through A's support point along -wall.normal.
 /// normal points from A into the wall (= -wall.normal); the wall's curvatures are zero.

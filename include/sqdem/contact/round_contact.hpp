@@ -1,0 +1,33 @@
+#pragma once
+// Round contacts: sphere-sphere and sphere-plane in closed form. Both bodies' curvatures are
+// known (1/r, or 0 for the plane) and the contact is a circle, so the engine's round kernels
+// need nothing but the normal, the overlap and the two surface points: this small record is
+// what they solve for (ContactGeometry, with curvature tensors and body-frame points, is built
+// from it only for a single query, detector.hpp).
+
+#include "sqdem/contact/contact_geometry.hpp"
+#include "sqdem/geometry/plane.hpp"
+
+namespace sqdem {
+
+struct RoundContact {
+  ContactStatus status = ContactStatus::Separated;
+  /// Along the normal (m): > 0 interpenetration, < 0 the gap (for Separated: 0, or the gap
+  /// beyond the cut-off).
+  double overlap = 0.0;
+  Vec3 normal = Vec3::UnitZ();  ///< unit, from A towards B
+  Vec3 pointA = Vec3::Zero();   ///< surface point of A (world, m)
+  Vec3 pointB = Vec3::Zero();   ///< surface point of B (world, m)
+
+  bool converged() const { return status == ContactStatus::Converged; }
+};
+
+/// Spheres of centres cA, cB and radii rA, rB; pairs further apart than cutoff are Separated.
+/// Coincident centres are Degenerate (normal +z, overlap rA + rB).
+RoundContact detectSpheres(const Vec3& centreA, double rA, const Vec3& centreB, double rB, double cutoff);
+
+/// A sphere (body A) against a wall: the normal is -wall.normal, A's point the sphere's deepest
+/// point towards the wall, B's its projection on the plane.
+RoundContact detectSphereWall(const Vec3& centre, double r, const Plane& wall, double cutoff);
+
+}  // namespace sqdem
