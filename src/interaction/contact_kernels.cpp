@@ -12,8 +12,9 @@
 namespace sqdem {
 namespace {
 
-/// How many contacts ahead a group kernel prefetches (ContactStore::prefetch).
-constexpr std::ptrdiff_t prefetchDistance = 8;
+/// How many contacts ahead a group kernel prefetches (ContactStore::prefetch): ~2 us ahead for
+/// spheres, ~20 us for ellipsoids; the 24 records (~17 kB) stay well inside L1.
+constexpr std::ptrdiff_t prefetchDistance = 24;
 
 Pose poseOf(const ParticleStore& p, std::uint32_t i) { return {p.position[i], p.orientation[i]}; }
 
