@@ -26,7 +26,7 @@ template <class Surfaces>
 struct Iterate {
   typename Surfaces::Point a, b;
   Vec3 t1, t2;    // tangent basis at A
-  Vec3 tb1, tb2;  // tangent basis at B, aligned with (t1, t2) when nB = -nA
+  Vec3 tb1, tb2;  // tangent basis at B, aligned with (t1, t2) when nB = -nA (withJacobian)
   Vec4 r;
   Mat4 J;
   double overlap = 0.0, lengthScale = 0.0;
@@ -42,14 +42,6 @@ Iterate<Surfaces> evaluate(const PairFrame& f, const Surfaces& surfaces, const V
   const Vec3& nA = it.a.normal;
   const Vec3& nB = it.b.normal;
   tangentBasis(nA, it.t1, it.t2);
-  const Vec3 u1 = it.t1 - nB * nB.dot(it.t1), u2 = it.t2 - nB * nB.dot(it.t2);
-  if (u1.squaredNorm() >= u2.squaredNorm()) {
-    it.tb1 = u1.normalized();
-    it.tb2 = it.tb1.cross(nB);
-  } else {
-    it.tb2 = u2.normalized();
-    it.tb1 = nB.cross(it.tb2);
-  }
   const double L = f.lengthScale;
   const Vec3 gap = pB - pA;
   const Vec3 normalSum = nA + nB;
@@ -61,11 +53,19 @@ Iterate<Surfaces> evaluate(const PairFrame& f, const Surfaces& surfaces, const V
   return it;
 }
 
-/// Sets it.J; it.finite becomes false if J is not finite.
+/// Sets B's tangent basis and it.J; it.finite becomes false if J is not finite.
 template <class Surfaces>
 void withJacobian(const Surfaces& surfaces, Iterate<Surfaces>& it) {
   const double L = it.lengthScale;
   const Vec3& nB = it.b.normal;
+  const Vec3 u1 = it.t1 - nB * nB.dot(it.t1), u2 = it.t2 - nB * nB.dot(it.t2);
+  if (u1.squaredNorm() >= u2.squaredNorm()) {
+    it.tb1 = u1.normalized();
+    it.tb2 = it.tb1.cross(nB);
+  } else {
+    it.tb2 = u2.normalized();
+    it.tb1 = nB.cross(it.tb2);
+  }
   const Vec3 tA[2] = {it.t1, it.t2};
   const Vec3 tB[2] = {it.tb1, it.tb2};
   const Vec3 SA[2] = {surfaces.shapeOperator(it.a, tA[0]), surfaces.shapeOperator(it.a, tA[1])};
