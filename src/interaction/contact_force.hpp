@@ -53,7 +53,7 @@ inline LawGeometry lawGeometry(const ContactModel& model, const ContactGeometry&
 }
 
 template <NormalLawComponent Law>
-ContactForce contactForce(const ContactModel& model, const Law& law, const LawGeometry& geometry,
+[[gnu::always_inline]] inline ContactForce contactForce(const ContactModel& model, const Law& law, const LawGeometry& geometry,
                           const ContactKinematics& motion, ContactHistory& history, double dt) {
   const double delta = geometry.overlap;
   const Vec3& n = geometry.normal;

@@ -25,7 +25,7 @@ bool cachesCurvatures(const ContactModel& model, PairKind kind) {
 
 /// A round kind's closed form for contact k (round_contact.hpp).
 template <PairKind Kind>
-RoundContact detectRound(const InteractionScene& scene, const ContactStore& s, std::uint32_t k) {
+[[gnu::always_inline]] inline RoundContact detectRound(const InteractionScene& scene, const ContactStore& s, std::uint32_t k) {
   const ParticleStore& p = scene.particles;
   const std::uint32_t a = s.a[k], b = s.b[k];
   const double rA = scene.shapes[p.shape[a]].a();
@@ -70,7 +70,7 @@ ContactGeometry detect(const InteractionScene& scene, const std::vector<double>&
 
 /// Relative motion at the contact point.
 template <PairKind Kind>
-ContactKinematics kinematics(const InteractionScene& scene, const ContactStore& s, std::uint32_t k, const Vec3& point) {
+[[gnu::always_inline]] inline ContactKinematics kinematics(const InteractionScene& scene, const ContactStore& s, std::uint32_t k, const Vec3& point) {
   const ParticleStore& p = scene.particles;
   const std::uint32_t a = s.a[k], b = s.b[k];
   ContactKinematics motion;
