@@ -1,31 +1,12 @@
 #include "sqdem/mechanics/mindlin_spring.hpp"
 
-#include <cmath>
-#include <numbers>
-
 #include "sqdem/mechanics/mindlin_deresiewicz.hpp"
-#include "sqdem/mechanics/tangent_plane.hpp"
 
 namespace sqdem {
 
-Vec3 MindlinSpring::force(const NormalContact& c, const Vec3& majorAxis, const Vec3& n, double area, const Vec3& vt,
-                          double limit, const ViscousDamping& damping, double mass, Vec3& spring, double dt) const {
-  keepInTangentPlane(spring, n);
-  spring += vt * dt;
-  if (!elliptic) {
-    // The circle: one stiffness in every tangential direction, K_t = 8 G* a I.
-    const double k = 8.0 * effectiveShear * std::sqrt(area / std::numbers::pi);
-    const double eta = damping.coefficient(mass, k);
-    Vec3 Ft = -(k * spring + eta * vt);
-    if (Ft.squaredNorm() > limit * limit) {
-      // Slip: the spring shrinks to what carries the Coulomb force.
-      Ft *= limit / Ft.norm();
-      spring = k > 0.0 ? Vec3(-(Ft + eta * vt) / k) : Vec3::Zero();
-    }
-    return Ft;
-  }
-  // The ellipse: stiffness along its major axis u and minor axis v.
-  const Vec3& u = majorAxis;
+Vec3 MindlinSpring::ellipticForce(const NormalContact& c, const Vec3& u, const Vec3& n, double area, const Vec3& vt,
+                                  double limit, const ViscousDamping& damping, double mass, Vec3& spring) const {
+  // Stiffness along the ellipse's major axis u and minor axis v.
   const double scale = 8.0 * effectiveShear * contactSemiMajorAxis(area, c.factors.e2);
   const MindlinPhi phi = mindlinPhi(c.factors.K, c.factors.D, poissonRatio);
   const double ku = scale / phi.major, kv = scale / phi.minor;

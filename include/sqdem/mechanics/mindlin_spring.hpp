@@ -10,8 +10,12 @@
 // Damping per axis: ViscousDamping with k_u, k_v. The partial-slip softening of 004 Eqs. 59-67
 // is not applied: the spring is linear up to the Coulomb limit. History: the spring (m).
 
+#include <cmath>
+#include <numbers>
+
 #include "sqdem/mechanics/damping.hpp"
 #include "sqdem/mechanics/normal_law.hpp"
+#include "sqdem/mechanics/tangent_plane.hpp"
 
 namespace sqdem {
 
@@ -24,8 +28,28 @@ struct MindlinSpring {
   /// Force on B at a contact of area A (m^2) with the normal n (A to B) and, if elliptic, the
   /// contact ellipse's major axis u (unit, normal to n: contactMajorAxis of elliptic.hpp); vt the
   /// tangential velocity of B relative to A (m/s), mass m* (kg), step dt (s). Updates the spring.
+  /// Inline: the circle is the whole of every round (sphere) contact's tangential work.
   Vec3 force(const NormalContact& c, const Vec3& majorAxis, const Vec3& n, double area, const Vec3& vt, double limit,
-             const ViscousDamping& damping, double mass, Vec3& spring, double dt) const;
+             const ViscousDamping& damping, double mass, Vec3& spring, double dt) const {
+    keepInTangentPlane(spring, n);
+    spring += vt * dt;
+    if (elliptic) return ellipticForce(c, majorAxis, n, area, vt, limit, damping, mass, spring);
+    // The circle: one stiffness in every tangential direction, K_t = 8 G* a I.
+    const double k = 8.0 * effectiveShear * std::sqrt(area / std::numbers::pi);
+    const double eta = damping.coefficient(mass, k);
+    Vec3 Ft = -(k * spring + eta * vt);
+    if (Ft.squaredNorm() > limit * limit) {
+      // Slip: the spring shrinks to what carries the Coulomb force.
+      Ft *= limit / Ft.norm();
+      spring = k > 0.0 ? Vec3(-(Ft + eta * vt) / k) : Vec3::Zero();
+    }
+    return Ft;
+  }
+
+ private:
+  /// The ellipse, with the spring already turned and advanced.
+  Vec3 ellipticForce(const NormalContact& c, const Vec3& u, const Vec3& n, double area, const Vec3& vt, double limit,
+                     const ViscousDamping& damping, double mass, Vec3& spring) const;
 };
 
 }  // namespace sqdem
