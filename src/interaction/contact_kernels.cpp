@@ -12,8 +12,8 @@
 namespace sqdem {
 namespace {
 
-/// How many contacts ahead a group kernel prefetches (ContactStore::prefetch): ~2 us ahead for
-/// spheres, ~20 us for ellipsoids; the 24 records (~17 kB) stay well inside L1.
+/// How many contacts ahead a group kernel prefetches (ContactStore::prefetch): a few us ahead for
+/// spheres, tens of us for ellipsoids; 24 contacts' records (~6-11 kB) stay well inside L1.
 constexpr std::ptrdiff_t prefetchDistance = 24;
 
 Pose poseOf(const ParticleStore& p, std::uint32_t i) { return {p.position[i], p.orientation[i]}; }

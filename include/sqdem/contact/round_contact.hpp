@@ -14,7 +14,7 @@ namespace sqdem {
 
 struct RoundContact {
   ContactStatus status = ContactStatus::Separated;
-  /// Along the normal (m): > 0 interpenetration, < 0 the gap (for Separated: 0, or the gap
+  /// Along the normal (m): > 0 interpenetration, < 0 the gap (for Separated: minus the gap
   /// beyond the cut-off).
   double overlap = 0.0;
   Vec3 normal = Vec3::UnitZ();  ///< unit, from A towards B
