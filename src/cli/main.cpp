@@ -1,5 +1,7 @@
-// sqdem command-line entry point: dispatches to the sub-commands in commands.hpp.
+// sqdem command-line entry point: dispatches to the sub-commands in commands.hpp. Every command
+// answers --help (or -h) among its arguments with its own section of the usage text.
 
+#include <algorithm>
 #include <cstdio>
 #include <exception>
 #include <string>
@@ -8,59 +10,103 @@
 
 namespace {
 
-constexpr const char* usage = R"(sqdem - DEM for superquadric and ellipsoidal particles
+struct Command {
+  const char* name;
+  const char* help;  ///< synopsis and description, as printed under "commands:"
+  int (*run)(const sqdem::cli::Arguments&);
+};
 
-usage: sqdem <command> [arguments]
-
-commands:
-  run <scene.yaml> [--threads N] [--out DIR] [--resume CHECKPOINT]
+constexpr Command commands[] = {
+    {"run", R"(  run <scene.yaml> [--threads N] [--out DIR] [--overwrite] [--resume CHECKPOINT]
                          Run a DEM scene (YAML; keys in README.md "Scene files"): builds the
                          particles, runs the stages, writes ParaView files (.pvd/.vtu/.vtp), a
                          CSV log and a checkpoint after every stage to DIR (default
-                         out/<scene name>), prints a summary. --resume continues a checkpoint
-                         of the same scene with its remaining stages.
-  validate table1        Reproduce Table 1 of the review (Kildashti et al. 2023, seed 004):
+                         out/<scene name>), prints a summary. --threads: OpenMP threads
+                         (default: OMP_NUM_THREADS if set, otherwise one per core; results do
+                         not depend on it). --overwrite: replace an earlier run's files in DIR
+                         (without it, a DIR holding them is an error). --resume continues a
+                         checkpoint of the same scene with its remaining stages.
+)",
+     sqdem::cli::runCommand},
+    {"validate", R"(  validate table1        Reproduce Table 1 of the review (Kildashti et al. 2023, seed 004):
                          normalised elliptic Hertz force of two n = 6 superquadrics in three
                          poses, against the review's accurate model, FEM and simplified model.
                          Exit code 1 if sqdem is more than 0.3 % from the accurate model.
-  geometry <file|->      Contact geometry probe: reads a JSON pair description (file, or - for
+)",
+     sqdem::cli::validateTable1},
+    {"geometry", R"(  geometry <file|->      Contact geometry probe: reads a JSON pair description (file, or - for
                          standard input) and prints the detector's and the elliptic-Hertz
                          factors' results as one JSON object. See docs in README.md.
-  sticking-velocity --radius R --density RHO --youngs-modulus E --poisson-ratio NU
+)",
+     sqdem::cli::geometryProbe},
+    {"sticking-velocity", R"(  sticking-velocity --radius R --density RHO --youngs-modulus E --poisson-ratio NU
                     --wall-youngs-modulus EW --wall-poisson-ratio NUW
                     --work-of-adhesion W --yield-pressure PY
                          Critical velocities (m/s) of a sphere hitting a flat wall under Nan et
                          al.'s elasto-plastic adhesive law (seed 000, Eqs. 73-79; SI units):
                          prints {"V_s", "V_y0", "V_y", "V_ys"} as one JSON object.
-  contact <file|-> [--out DIR]
+)",
+     sqdem::cli::stickingVelocity},
+    {"contact", R"(  contact <file|-> [--out DIR]
                          Single-contact driver: drives one contact (two posed shapes through the
                          detector, or prescribed radii) along a normal (and optional tangential)
                          displacement history with one or more laws (hertz, becker_kamlah, jkr,
                          nan); writes one CSV per curve, a gnuplot script and a PNG to DIR
                          (default .), and prints a JSON summary. See README.md and examples/.
-  help, --help, -h       This text.
+)",
+     sqdem::cli::contactDriver},
+};
+
+constexpr const char* header = R"(sqdem - DEM for superquadric and ellipsoidal particles
+
+usage: sqdem <command> [arguments]    (sqdem <command> --help: that command alone)
+
+commands:
 )";
+
+constexpr const char* footer = R"(  help, --help, -h       This text.
+  version, --version     The version of sqdem.
+)";
+
+void printUsage(std::FILE* out) {
+  std::fputs(header, out);
+  for (const Command& c : commands) std::fputs(c.help, out);
+  std::fputs(footer, out);
+}
+
+bool asksForHelp(const sqdem::cli::Arguments& args) {
+  return std::any_of(args.begin(), args.end(), [](const std::string& a) { return a == "--help" || a == "-h"; });
+}
 
 }  // namespace
 
 int main(int argc, char** argv) {
   const sqdem::cli::Arguments args(argv + 1, argv + argc);
   if (args.empty() || args[0] == "help" || args[0] == "--help" || args[0] == "-h") {
-    std::fputs(usage, args.empty() ? stderr : stdout);
+    printUsage(args.empty() ? stderr : stdout);
     return args.empty() ? 2 : 0;
   }
+  if (args[0] == "version" || args[0] == "--version") {
+    std::printf("sqdem %s\n", SQDEM_VERSION);
+    return 0;
+  }
   const sqdem::cli::Arguments rest(args.begin() + 1, args.end());
+  const auto command = std::find_if(std::begin(commands), std::end(commands),
+                                    [&](const Command& c) { return args[0] == c.name; });
+  if (command == std::end(commands)) {
+    std::string names;
+    for (const Command& c : commands) names += std::string(c.name) + ", ";
+    std::fprintf(stderr, "sqdem: unknown command '%s' (allowed: %shelp, version)\n", args[0].c_str(), names.c_str());
+    return 2;
+  }
+  if (asksForHelp(rest)) {
+    std::printf("usage: sqdem\n%s", command->help);
+    return 0;
+  }
   try {
-    if (args[0] == "validate") return sqdem::cli::validateTable1(rest);
-    if (args[0] == "geometry") return sqdem::cli::geometryProbe(rest);
-    if (args[0] == "sticking-velocity") return sqdem::cli::stickingVelocity(rest);
-    if (args[0] == "contact") return sqdem::cli::contactDriver(rest);
-    if (args[0] == "run") return sqdem::cli::runCommand(rest);
+    return command->run(rest);
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "sqdem %s: error: %s\n", args[0].c_str(), e.what());
+    std::fprintf(stderr, "sqdem %s: error: %s\n", command->name, e.what());
     return 1;
   }
-  std::fprintf(stderr, "sqdem: unknown command '%s' (allowed: run, validate, geometry, sticking-velocity, contact, help)\n",
-               args[0].c_str());
-  return 2;
 }

@@ -1,0 +1,38 @@
+# Help and version: every command answers --help / -h with its own usage section (and does not
+# take the flag for a file or an unknown option), `sqdem --version` prints the project version.
+. "$(dirname "$0")/lib.sh"
+
+# expect_output NAME PATTERN COMMAND...: the command succeeds and its standard output matches
+# the grep -E PATTERN.
+expect_output() {
+  local name=$1 pattern=$2
+  shift 2
+  local out
+  if ! out=$("$@" 2>&1); then
+    fail "$name: exit non-zero: $out"
+  elif ! printf '%s' "$out" | grep -qE -- "$pattern"; then
+    fail "$name: output does not match /$pattern/: $out"
+  else
+    pass
+  fi
+}
+
+for command in run validate geometry sticking-velocity contact; do
+  for flag in --help -h; do
+    expect_output "$command $flag" "^usage: sqdem" "$sqdem" "$command" "$flag"
+    expect_output "$command $flag names the command" "^  $command " "$sqdem" "$command" "$flag"
+  done
+done
+# --help after other arguments still asks for help (nothing is run, nothing written).
+expect_output "run scene --help" "--threads N" "$sqdem" run "$scratch/missing.yaml" --help
+check "run --help wrote nothing" test ! -e "$scratch/out"
+expect_output "run --help states the default thread count" "default: OMP_NUM_THREADS if set, otherwise one per core" \
+  "$sqdem" run --help
+
+version=$(sed -n 's/^project(sqdem VERSION \([0-9.]*\).*/\1/p' "$source_dir/CMakeLists.txt")
+expect_output "--version" "^sqdem $version\$" "$sqdem" --version
+expect_output "version" "^sqdem $version\$" "$sqdem" version
+expect_output "help lists version" "version, --version" "$sqdem" help
+expect_error "unknown command lists the commands" 2 "allowed: run, validate, geometry, sticking-velocity, contact, help, version" \
+  "$sqdem" frobnicate
+finish
