@@ -219,14 +219,15 @@ std::string readTitle(const json& input, const std::string& fallback) {
   return title;
 }
 
-/// Runs `gnuplot script` in `directory` without a shell (no user text is ever parsed as a
-/// command). Returns gnuplot's exit status, or -1 when gnuplot is not installed.
-int runGnuplot(const fs::path& directory, const std::string& script) {
+/// Runs `gnuplot -e "output='<output>'" script` in `directory` without a shell (no user text is
+/// ever parsed as a command; output is a validated file name). Returns gnuplot's exit status, or
+/// -1 when gnuplot is not installed.
+int runGnuplot(const fs::path& directory, const std::string& script, const std::string& output) {
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_addchdir_np(&actions, directory.c_str());
-  std::string program = "gnuplot", argument = script;
-  char* argv[] = {program.data(), argument.data(), nullptr};
+  std::string program = "gnuplot", option = "-e", assignment = "output='" + output + "'", argument = script;
+  char* argv[] = {program.data(), option.data(), assignment.data(), argument.data(), nullptr};
   pid_t pid = 0;
   const int spawned = posix_spawnp(&pid, "gnuplot", &actions, nullptr, argv, environ);
   posix_spawn_file_actions_destroy(&actions);
@@ -375,7 +376,9 @@ int runContact(const std::string& inputPath, const fs::path& outDir, bool allowD
   std::ostringstream gp;
   gp << "# gnuplot script written by `sqdem contact`; run: gnuplot " << name << ".gp\n"
      << "set terminal pngcairo size 1000,650 enhanced font ',11'\n"
-     << "set output '" << name << ".png.tmp'\n"
+     << "# sqdem sets 'output' to a temporary name and renames the PNG when gnuplot succeeded\n"
+     << "if (!exists(\"output\")) output = '" << name << ".png'\n"
+     << "set output output\n"
      << "set datafile separator ','\nset key top left\nset grid\n"
      << "set title '" << title << "' noenhanced\n"
      << "set xlabel '" << xLabel << "' noenhanced\nset ylabel '" << yLabel << "' noenhanced\n"
@@ -389,7 +392,7 @@ int runContact(const std::string& inputPath, const fs::path& outDir, bool allowD
 
   summary["gnuplot_script"] = (outDir / (name + ".gp")).string();
   summary["plot"] = nullptr;
-  const int gnuplot = runGnuplot(outDir, name + ".gp");
+  const int gnuplot = runGnuplot(outDir, name + ".gp", name + ".png.tmp");
   if (gnuplot < 0) {
     std::cerr << "sqdem contact: warning: gnuplot not found (scripts/setup.sh installs gnuplot-nox); "
                  "CSV and script written, PNG skipped\n";

@@ -38,5 +38,13 @@ printf '{"name": "ok", "title": "Hertz (R = 1 um), 5%% / 10%%: ok!", %s}' "$base
 weird="$scratch/it's a dir"
 check "plain title runs" "$sqdem" contact "$scratch/ok.json" --out "$weird"
 check "title verbatim in the script" grep -qF "set title 'Hertz (R = 1 um), 5% / 10%: ok!' noenhanced" "$weird/ok.gp"
-if command -v gnuplot >/dev/null; then check "PNG written" test -s "$weird/ok.png"; fi
+if command -v gnuplot >/dev/null; then
+  check "PNG written" test -s "$weird/ok.png"
+  check "no temporary PNG left" test ! -e "$weird/ok.png.tmp"
+  # Rerun as the script's header says: it writes ok.png again, not ok.png.tmp.
+  rm "$weird/ok.png"
+  check "the script rerun by hand" bash -c 'cd "$1" && gnuplot ok.gp' _ "$weird"
+  check "its PNG is ok.png" test -s "$weird/ok.png"
+  check "and no ok.png.tmp" test ! -e "$weird/ok.png.tmp"
+fi
 finish
