@@ -2,21 +2,6 @@
 # take the flag for a file or an unknown option), `sqdem --version` prints the project version.
 . "$(dirname "$0")/lib.sh"
 
-# expect_output NAME PATTERN COMMAND...: the command succeeds and its standard output matches
-# the grep -E PATTERN.
-expect_output() {
-  local name=$1 pattern=$2
-  shift 2
-  local out
-  if ! out=$("$@" 2>&1); then
-    fail "$name: exit non-zero: $out"
-  elif ! printf '%s' "$out" | grep -qE -- "$pattern"; then
-    fail "$name: output does not match /$pattern/: $out"
-  else
-    pass
-  fi
-}
-
 for command in run validate geometry sticking-velocity contact; do
   for flag in --help -h; do
     expect_output "$command $flag" "^usage: sqdem" "$sqdem" "$command" "$flag"

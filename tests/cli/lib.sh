@@ -29,6 +29,21 @@ expect_error() {
   fi
 }
 
+# expect_output NAME PATTERN COMMAND...: the command succeeds and its standard output matches
+# the grep -E PATTERN.
+expect_output() {
+  local name=$1 pattern=$2
+  shift 2
+  local out
+  if ! out=$("$@" 2>&1); then
+    fail "$name: exit non-zero: $out"
+  elif ! printf '%s' "$out" | grep -qE -- "$pattern"; then
+    fail "$name: output does not match /$pattern/: $out"
+  else
+    pass
+  fi
+}
+
 # check NAME COMMAND...: the command succeeds.
 check() {
   local name=$1
