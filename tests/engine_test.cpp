@@ -350,6 +350,24 @@ TEST(Engine, InteractionOverridesPairRestitutionAndFriction) {
   EXPECT_NEAR(pair.contactModel(0, 0).damping.ratio, -l / std::sqrt(std::numbers::pi * std::numbers::pi + l * l), 1e-15);
 }
 
+// walls: a cylinder (axis, radius, spin) next to a plane; insertion keeps particles out of it.
+TEST(Engine, CylinderWallFromTheScene) {
+  const std::string plane = "  - {point: [0, 0, 0], normal: [0, 0, 1], material: glass}\n";
+  const World world = buildWorld(loadScene(writeScene(
+      "roller", replaced(bedScene, plane, plane + "  - {point: [3.0e-3, 0, 6.0e-3], axis: [0, 2, 0], radius: 2.0e-3, spin: -4, "
+                                                  "velocity: [0.1, 0, 0], material: glass}\n"))));
+  ASSERT_EQ(world.walls().size(), 2u);
+  const Wall& w = world.walls()[1];
+  EXPECT_EQ(w.shape, WallShape::Cylinder);
+  EXPECT_EQ(w.cylinder.axis, Vec3::UnitY());
+  EXPECT_EQ(w.cylinder.radius, 2.0e-3);
+  EXPECT_EQ(w.spin, -4.0);
+  EXPECT_EQ(w.velocity, Vec3(0.1, 0.0, 0.0));
+  for (std::size_t i = 0; i < world.particles().size(); ++i) {
+    EXPECT_GT(w.distance(world.particles().position[i]), world.shapes()[world.particles().shape[i]].boundingRadius());
+  }
+}
+
 TEST(Engine, DetectorToleranceKeySetsTheEnginesSolve) {
   EXPECT_EQ(buildWorld(loadScene(writeScene("plain", bedScene))).detectorControl().tolerance, DetectorControl{}.tolerance);
   const World tight = buildWorld(loadScene(writeScene("tight", replaced(bedScene, "seed: 7", "seed: 7\ndetector_tolerance: 1e-10"))));
@@ -380,6 +398,19 @@ TEST(Engine, SceneErrorsNameLineKeyAndWhatIsAllowed) {
                    "'stages[0].move_wall.path': times must be > 0 and increasing (s)");
   expectSceneError(replaced(bedScene, "{name: settle, duration: 0.2}", "{name: settle, duration: 0.2, move_wall: {wall: 0}}"),
                    "'stages[0].move_wall': needs exactly one of velocity");
+  const std::string roller = "  - {point: [0, 0, 0], normal: [0, 0, 1], material: glass}\n";
+  expectSceneError(replaced(bedScene, roller, roller + "  - {point: [0, 0, 0.02], normal: [0, 0, -1], axis: [0, 1, 0], material: glass}\n"),
+                   "'walls[1]': needs exactly one of normal [nx, ny, nz] (a plane) or axis [ux, uy, uz] with radius (m) (a cylinder)");
+  expectSceneError(replaced(bedScene, roller, roller + "  - {point: [0, 0, 0.02], axis: [0, 1, 0], material: glass}\n"),
+                   "'walls[1].radius': missing");
+  expectSceneError(replaced(bedScene, roller, roller + "  - {point: [0, 0, 0.02], axis: [0, 1, 0], radius: -1, material: glass}\n"),
+                   "'walls[1].radius': must be > 0 (m)");
+  expectSceneError(replaced(bedScene, roller, roller + "  - {point: [0, 0, 0.02], normal: [0, 0, -1], spin: 3, material: glass}\n"),
+                   "'walls[1].spin': belongs to a cylinder (axis), not a plane (normal)");
+  const std::string withRoller =
+      replaced(bedScene, roller, roller + "  - {point: [0, 0, 0.02], axis: [0, 1, 0], radius: 5.0e-3, spin: 3, material: glass}\n");
+  expectSceneError(replaced(withRoller, "{name: settle, duration: 0.2}", "{name: settle, duration: 0.2, servo_wall: {wall: 1, pressure: 10, max_speed: 1}}"),
+                   "'stages[0].servo_wall.wall': walls[1] is a cylinder; this needs a plane");
   expectSceneError(replaced(bedScene, "count: 60", "count: 60, solid_fraction: 0.1"), "'insert[0]': needs exactly one of count");
   expectSceneError(replaced(bedScene, "count: 60", "solid_fraction: 0.6"), "'insert[0].solid_fraction': must be in (0, 0.4]");
   expectSceneError(withInteraction("    normal: becker_kamlah\n"),

@@ -47,7 +47,13 @@ ContactGeometry detect(const InteractionScene& scene, const std::vector<double>&
   // Gaps within the skin are solved too (rough and adhesive contacts act across them, and every
   // candidate is warm-started next step).
   const DetectorSettings settings{.cutoff = scene.skin, .tolerance = scene.detector.tolerance, .curvatures = curvatures};
-  if constexpr (withWall(Kind)) {
+  if constexpr (Kind == PairKind::ParticleCylinder) {
+    const WarmStart warm{s.localA[k], s.localB[k], s.overlap[k]};
+    const bool touched = s.status[k] == ContactStatus::Converged && scene.detector.warmStart;
+    Cylinder image = scene.walls[b & ~wallFlag].cylinder;  // the image nearest A (a periodic box)
+    image.point += s.shift[k];
+    return detectContact(A, poseOf(p, a), image, settings, touched ? &warm : nullptr);
+  } else if constexpr (withWall(Kind)) {
     return detectContact(A, poseOf(p, a), scene.walls[b & ~wallFlag].plane, settings);
   } else {
     // A pair found separated stays so until the particles could have moved by its gap.
@@ -78,7 +84,7 @@ template <PairKind Kind>
   motion.angularVelocityA = p.angularVelocity[a];
   const Vec3 velocityA = p.velocity[a] + p.angularVelocity[a].cross(point - p.position[a]);
   if constexpr (withWall(Kind)) {
-    motion.relativeVelocity = scene.walls[b & ~wallFlag].velocity - velocityA;
+    motion.relativeVelocity = scene.walls[b & ~wallFlag].surfaceVelocity(point - s.shift[k]) - velocityA;
     motion.effectiveMass = p.mass[a];
   } else {
     const Vec3 centreB = p.position[b] + s.shift[k];
@@ -232,6 +238,8 @@ void runGroup(PairKind kind, const std::vector<std::uint32_t>& members, const Co
       return runGroup<PairKind::SuperquadricPair>(members, model, law, scene, speedBound, s, statistics);
     case PairKind::SphereWall: return runGroup<PairKind::SphereWall>(members, model, law, scene, speedBound, s, statistics);
     case PairKind::ParticleWall: return runGroup<PairKind::ParticleWall>(members, model, law, scene, speedBound, s, statistics);
+    case PairKind::ParticleCylinder:
+      return runGroup<PairKind::ParticleCylinder>(members, model, law, scene, speedBound, s, statistics);
   }
 }
 

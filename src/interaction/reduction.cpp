@@ -28,6 +28,7 @@ void Interactions::reduce(ParticleStore& p, const Vec3& gravity, double drag, st
   }
   for (Wall& w : walls) {
     w.force.setZero();
+    w.torque.setZero();
     w.elasticForce.setZero();
     w.stiffness = 0.0;
   }
@@ -37,6 +38,7 @@ void Interactions::reduce(ParticleStore& p, const Vec3& gravity, double drag, st
     if (s.onWall(k)) {
       Wall& w = walls[s.b[k] & ~wallFlag];
       w.force += s.force[k];
+      w.torque += (s.point[k] - s.shift[k] - w.reference()).cross(s.force[k]) + (s.withRolling ? s.moment[k] : Vec3::Zero());
       w.elasticForce += s.force[k] - s.load[k].damping * s.normal[k];
       w.stiffness += s.load[k].stiffness;
     }

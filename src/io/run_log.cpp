@@ -6,12 +6,17 @@
 
 namespace sqdem {
 
-RunLog::RunLog(const std::filesystem::path& path, std::size_t walls) : path_(path), out_(path, std::ios::trunc) {
+RunLog::RunLog(const std::filesystem::path& path, const std::vector<Wall>& walls) : path_(path), out_(path, std::ios::trunc) {
   if (!out_) throw std::runtime_error("cannot write '" + path.string() + "'");
   out_.precision(12);
   out_ << "time,step,stage,kinetic_energy,contacts,mean_coordination,solid_fraction,bed_height,detector_failures"
           ",stress_xx,stress_yy,stress_zz,stress_xy,stress_xz,stress_yz";
-  for (std::size_t w = 0; w < walls; ++w) out_ << ",wall" << w << "_z,wall" << w << "_fx,wall" << w << "_fy,wall" << w << "_fz";
+  for (std::size_t w = 0; w < walls.size(); ++w) {
+    const std::string name = ",wall" + std::to_string(w);
+    if (walls[w].shape == WallShape::Cylinder) out_ << name << "_x" << name << "_y";
+    out_ << name << "_z" << name << "_fx" << name << "_fy" << name << "_fz";
+    if (walls[w].shape == WallShape::Cylinder) out_ << name << "_tx" << name << "_ty" << name << "_tz";
+  }
   out_ << std::endl;
 }
 
@@ -22,7 +27,10 @@ void RunLog::row(const World& world, long step, const std::string& stage) {
        << world.statistics().detectorFailures;
   for (const auto& [i, j] : {std::pair{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}}) out_ << ',' << m.stress(i, j);
   for (const Wall& w : world.walls()) {
-    out_ << ',' << w.plane.point.z() << ',' << w.force.x() << ',' << w.force.y() << ',' << w.force.z();
+    const Vec3& x = w.reference();
+    if (w.shape == WallShape::Cylinder) out_ << ',' << x.x() << ',' << x.y();
+    out_ << ',' << x.z() << ',' << w.force.x() << ',' << w.force.y() << ',' << w.force.z();
+    if (w.shape == WallShape::Cylinder) out_ << ',' << w.torque.x() << ',' << w.torque.y() << ',' << w.torque.z();
   }
   out_ << std::endl;
 }

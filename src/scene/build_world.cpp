@@ -32,13 +32,6 @@ Superquadric sampleShape(std::mt19937_64& rng, const ShapeFamily& f) {
   return Superquadric(s, s * b, s * c, f.n1, f.n2);
 }
 
-Vec3 minimumImage(Vec3 d, const Domain& domain) {
-  for (int k = 0; k < 3; ++k) {
-    if (domain.periodic[k]) d(k) -= domain.length()(k) * std::round(d(k) / domain.length()(k));
-  }
-  return d;
-}
-
 /// Explicit particles may not start overlapping another particle or a wall unless their entry
 /// allows it: the contacts of a copy of the world at its initial state name the first offender.
 void refuseOverlaps(const Scene& scene, const World& world) {
@@ -118,9 +111,9 @@ World buildWorld(const Scene& scene) {
       for (int attempt = 0; attempt < 10000 && !placed; ++attempt) {
         const Vec3 x = scene.domain.wrap(Vec3(ux(rng), uy(rng), uz(rng)));
         placed = std::all_of(scene.walls.begin(), scene.walls.end(),
-                             [&](const WallSpec& w) { return (x - w.point).dot(w.normal) > r; });
+                             [&](const WallSpec& w) { return w.wall().distance(x) > r; });
         for (std::size_t j = 0; placed && j < centres.size(); ++j) {
-          placed = minimumImage(x - centres[j], scene.domain).norm() > r + radii[j];
+          placed = scene.domain.minimumImage(x - centres[j]).norm() > r + radii[j];
         }
         if (placed) {
           shapes.push_back(shape);
@@ -184,13 +177,7 @@ World buildWorld(const Scene& scene) {
                        " m, beyond the skin " + shortNumber(world.neighbourList().skin()) + " m: raise 'skin' to at least that");
     }
   }
-  for (const WallSpec& spec : scene.walls) {
-    Wall wall;
-    wall.plane = Plane{spec.point, spec.normal};
-    wall.velocity = spec.velocity;
-    wall.material = spec.material;
-    world.addWall(wall);
-  }
+  for (const WallSpec& spec : scene.walls) world.addWall(spec.wall());
   for (std::size_t i = 0; i < shapes.size(); ++i) {
     world.addParticle(static_cast<std::uint32_t>(i), materialOf[i], centres[i], orientations[i]);
   }

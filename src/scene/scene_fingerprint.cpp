@@ -41,7 +41,9 @@ std::uint64_t sceneFingerprint(const Scene& scene) {
           i.curvatureTolerance, i.restitution, i.friction, i.stiffnessScale, i.rollingHysteresis);
     for (const auto& [key, value] : i.lawParameters) h.all(key, value);
   }
-  for (const WallSpec& w : scene.walls) h.all(w.point, w.normal, w.velocity, h.n(w.material));
+  for (const WallSpec& w : scene.walls) {
+    h.all(h.n(static_cast<std::uint32_t>(w.shape)), w.point, w.normal, w.axis, w.radius, w.spin, w.velocity, h.n(w.material));
+  }
   for (const ParticleSpec& p : scene.particles) {
     const Quat& q = p.orientation;
     h.all(p.origin, h.n(p.shape.value_or(~std::uint32_t{0})), p.semiAxes, p.n1, p.n2, h.n(p.material), p.centre, q.w(), q.x(),

@@ -92,6 +92,14 @@ class Reader {
     }
     return static_cast<std::size_t>(w);
   }
+  /// The required key "wall": the index of a plane (pressures and paths along a normal).
+  std::size_t plane(const YAML::Node& map, const std::string& where, const std::vector<WallSpec>& walls) const {
+    const std::size_t w = wallIndex(map, where, walls.size());
+    if (walls[w].shape != WallShape::Plane) {
+      fail(map["wall"], keyPath(where, "wall"), "walls[" + std::to_string(w) + "] is a cylinder; this needs a plane");
+    }
+    return w;
+  }
   Vec3 vector(const YAML::Node& map, const std::string& key, const std::string& where) const {
     const YAML::Node v = map[key];
     if (!v) fail(map, keyPath(where, key), "missing ([x, y, z] required)");
@@ -423,12 +431,27 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
     if (!walls.IsSequence()) r.fail(walls, "walls", "must be a list");
     for (std::size_t k = 0; k < walls.size(); ++k) {
       const std::string where = "walls[" + std::to_string(k) + "]";
-      r.allowOnly(walls[k], where, {"point", "normal", "velocity", "material"});
+      r.allowOnly(walls[k], where, {"point", "normal", "axis", "radius", "spin", "velocity", "material"});
       WallSpec w;
       w.point = r.vector(walls[k], "point", where);
-      w.normal = r.vector(walls[k], "normal", where);
-      if (!(w.normal.norm() > 0.0)) r.fail(walls[k]["normal"], where + ".normal", "must be non-zero");
-      w.normal.normalize();
+      // A plane has a normal; a cylinder an axis, a radius and optionally a spin.
+      if (walls[k]["normal"].IsDefined() == walls[k]["axis"].IsDefined()) {
+        r.fail(walls[k], where, "needs exactly one of normal [nx, ny, nz] (a plane) or axis [ux, uy, uz] with radius (m) (a cylinder)");
+      }
+      const char* direction = walls[k]["normal"] ? "normal" : "axis";
+      const Vec3 unit = r.vector(walls[k], direction, where);
+      if (!(unit.norm() > 0.0)) r.fail(walls[k][direction], where + "." + direction, "must be non-zero");
+      if (walls[k]["normal"]) {
+        w.normal = unit.normalized();
+        for (const char* key : {"radius", "spin"}) {
+          if (walls[k][key]) r.fail(walls[k][key], where + "." + key, "belongs to a cylinder (axis), not a plane (normal)");
+        }
+      } else {
+        w.shape = WallShape::Cylinder;
+        w.axis = unit.normalized();
+        w.radius = r.positive(walls[k], "radius", where, "m");
+        w.spin = r.number(walls[k], "spin", where, 0.0);
+      }
       if (walls[k]["velocity"]) w.velocity = r.vector(walls[k], "velocity", where);
       if (!walls[k]["material"]) r.fail(walls[k], where + ".material", "missing");
       w.material = r.lookup(walls[k]["material"], where + ".material", scene.materials, "material");
@@ -535,7 +558,7 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
       }
       if (stop["wall_pressure"]) {
         spec.wallPressure = r.positive(stop, "wall_pressure", where + ".stop", "Pa");
-        spec.pressureWall = r.wallIndex(stop, where + ".stop", scene.walls.size());
+        spec.pressureWall = r.plane(stop, where + ".stop", scene.walls);
       }
       spec.minimumDuration = r.number(stop, "after", where + ".stop", 0.0);
     }
@@ -549,6 +572,7 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
       if (move["velocity"]) spec.wallVelocity = r.vector(move, "velocity", at);
       if (const YAML::Node path = move["path"]) {
         const std::string key = at + ".path";
+        r.plane(move, at, scene.walls);  // the path runs along the plane's normal
         if (!path.IsSequence() || path.size() == 0) r.fail(path, key, "must be a list of [t (s), offset along the wall normal (m)] points");
         double last = 0.0;
         for (const auto& point : path) {
@@ -562,7 +586,7 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
     }
     if (const YAML::Node servo = st["servo_wall"]) {
       r.allowOnly(servo, where + ".servo_wall", {"wall", "pressure", "max_speed"});
-      spec.servoWall = r.wallIndex(servo, where + ".servo_wall", scene.walls.size());
+      spec.servoWall = r.plane(servo, where + ".servo_wall", scene.walls);
       if (spec.wall == spec.servoWall) r.fail(servo, where + ".servo_wall", "the same wall cannot also be in move_wall");
       spec.servo.pressure = r.positive(servo, "pressure", where + ".servo_wall", "Pa");
       spec.servo.maxSpeed = r.positive(servo, "max_speed", where + ".servo_wall", "m/s");

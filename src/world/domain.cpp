@@ -14,4 +14,11 @@ Vec3 Domain::wrap(Vec3 x) const {
   return x;
 }
 
+Vec3 Domain::minimumImage(Vec3 d) const {
+  for (int k = 0; k < 3; ++k) {
+    if (periodic[k]) d(k) -= length()(k) * std::round(d(k) / length()(k));
+  }
+  return d;
+}
+
 }  // namespace sqdem

@@ -56,6 +56,7 @@ PackingMeasures measurePacking(const World& world) {
   const Wall* floor = nullptr;
   const Wall* ceiling = nullptr;
   for (const Wall& w : world.walls()) {
+    if (w.shape != WallShape::Plane) continue;
     if (w.plane.normal.z() > 0.999) floor = &w;
     if (w.plane.normal.z() < -0.999) ceiling = &w;
   }

@@ -31,7 +31,9 @@ RunHealth::RunHealth(const World& world) {
 }
 
 std::string RunHealth::afterStep(const World& world) {
-  for (const Wall& w : world.walls()) wallWork_ += std::abs(w.force.dot(w.velocity)) * world.timeStep();
+  for (const Wall& w : world.walls()) {
+    wallWork_ += (std::abs(w.force.dot(w.velocity)) + std::abs(w.spin * w.torque.dot(w.cylinder.axis))) * world.timeStep();
+  }
   if (++steps_ % checkEvery != 0) return {};
   char text[256];
   const double energy = world.kineticEnergy();

@@ -72,15 +72,17 @@ void World::buildCandidates() {
   for (std::uint32_t i = 0; i < p.size(); ++i) {
     for (; pair != pairsEnd && pair->a == i; ++pair) next.push_back({i, pair->b, pair->shift});
     for (std::uint32_t w = 0; w < walls_.size(); ++w) {
-      const Plane& plane = walls_[w].plane;
-      if ((p.position[i] - plane.point).dot(plane.normal) < boundingRadius_[i] + range + skin) {
-        next.push_back({i, wallFlag | w});
-      }
+      // A cylinder across a periodic direction acts through its image nearest the particle
+      // (the contact's shift); planes are parallel to the periodic directions.
+      const Wall& wall = walls_[w];
+      const Vec3 r = p.position[i] - wall.reference();
+      const Vec3 shift = wall.shape == WallShape::Cylinder ? Vec3(r - domain_.minimumImage(r)) : Vec3::Zero();
+      if (wall.distance(p.position[i] - shift) < boundingRadius_[i] + range + skin) next.push_back({i, wallFlag | w, shift});
     }
   }
   interactions_.setCandidates(next, interactionScene());
   wallReference_.clear();
-  for (const Wall& w : walls_) wallReference_.push_back(w.plane.point);
+  for (const Wall& w : walls_) wallReference_.push_back(w.reference());
 }
 
 double World::largestRange() const {
@@ -93,7 +95,7 @@ bool World::wallsMovedHalfSkin() const {
   if (wallReference_.size() != walls_.size()) return true;
   const double limit = 0.25 * neighbours_.skin() * neighbours_.skin();
   for (std::size_t w = 0; w < walls_.size(); ++w) {
-    if ((walls_[w].plane.point - wallReference_[w]).squaredNorm() > limit) return true;
+    if ((walls_[w].reference() - wallReference_[w]).squaredNorm() > limit) return true;
   }
   return false;
 }
@@ -143,7 +145,7 @@ void World::step() {
   for (std::size_t k = 0; k < walls_.size(); ++k) {
     Wall& w = walls_[k];
     if (w.servo) w.velocity = servoVelocity(k) * w.plane.normal;
-    w.plane.point += h * w.velocity;
+    w.translate(h * w.velocity);
   }
   time_ += h;
   timing_.integration += seconds(Clock::now() - start);

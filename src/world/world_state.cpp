@@ -58,7 +58,10 @@ void World::readState(CheckpointReader& in) {
   for (std::size_t i = 0; i < n; ++i) {
     requireIntact(restored.shape[i] < shapes_.size() && restored.material[i] < materials_.size(), "shape or material index");
   }
-  for (const Wall& w : wallRecords) requireIntact(w.material < materials_.size(), "wall material index");
+  for (const Wall& w : wallRecords) {
+    requireIntact(w.material < materials_.size(), "wall material index");
+    requireIntact(w.shape == WallShape::Plane || w.shape == WallShape::Cylinder, "wall shape");
+  }
   Interactions interactions = Interactions::readState(
       in, {restored, shapes_, boundingRadius, wallRecords, models_, materials_.size(), neighbours_.skin(), dt_, detector_});
   in.getVector(reference, n);

@@ -21,12 +21,13 @@
 // penetration depth of the Minkowski difference) as overlap and its normal and support points.
 //
 // Closed forms: sphere-sphere and sphere-plane (round_contact.hpp), and every
-// superquadric-plane pair (support map).
+// superquadric-plane pair (support map). Particle-cylinder: a one-dimensional search.
 // Before any iteration, pairs further apart than the cut-off are culled by bounding spheres and
 // oriented boxes. The result is never NaN/inf: an unresolved pair is a status (contact_geometry.hpp).
 
 #include "sqdem/contact/contact_geometry.hpp"
 #include "sqdem/contact/round_contact.hpp"
+#include "sqdem/geometry/cylinder.hpp"
 #include "sqdem/geometry/plane.hpp"
 #include "sqdem/geometry/pose.hpp"
 #include "sqdem/geometry/superquadric.hpp"
@@ -68,6 +69,13 @@ ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const Su
 /// normal points from A into the wall (= -wall.normal); the wall's curvatures are zero.
 ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const Plane& wall,
                               const DetectorSettings& settings = {});
+
+/// Particle A against the outside of an infinite cylinder (body B, a roller): the normal is
+/// perpendicular to the axis, found as the separating direction of largest signed distance
+/// (cylinder_detector.cpp); closed form for a sphere. Warm: searched near the previous normal.
+/// B's curvatures are 1/radius around the axis and 0 along it; B's point is in world frame.
+ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const Cylinder& roller,
+                              const DetectorSettings& settings = {}, const WarmStart* previous = nullptr);
 
 /// Sets the principal curvatures of a solution found without them (settings.curvatures false)
 /// at its surface points localPointA and localPointB (body frames).

@@ -1,11 +1,13 @@
 #pragma once
-// A wall: an infinite plane, a kinematic body moved with a prescribed velocity or under servo
-// control (DESIGN.md §2: walls are kinematic bodies; the particles' forces on it are summed in
-// the interaction layer's reduction).
+// A wall: a kinematic body (DESIGN.md §2) whose surface is an infinite plane or the outside of
+// an infinite cylinder (a roller), moved with a prescribed velocity or, a plane, under servo
+// control; a cylinder may also spin about its axis. The particles' forces and torques on it
+// are summed in the interaction layer's reduction.
 
 #include <cstdint>
 #include <optional>
 
+#include "sqdem/geometry/cylinder.hpp"
 #include "sqdem/geometry/plane.hpp"
 #include "sqdem/math/types.hpp"
 
@@ -25,16 +27,41 @@ struct WallServo {
   double maxSpeed = 0.0;  ///< (m/s), > 0
 };
 
-/// An infinite plane moving with a prescribed velocity or under servo control; `force` is what
-/// the particles exert on it.
+/// What a wall's surface is.
+enum class WallShape : std::uint8_t {
+  Plane,     ///< `plane`
+  Cylinder,  ///< the outside of `cylinder`
+};
+
+/// A wall moving with a prescribed velocity or under servo control; `force` and `torque` are
+/// what the particles exert on it.
 struct Wall {
-  Plane plane;
-  Vec3 velocity = Vec3::Zero();  ///< (m/s)
+  Plane plane;                   ///< the surface of a Plane wall
+  Vec3 velocity = Vec3::Zero();  ///< of its reference point (m/s)
   std::uint32_t material = 0;
   Vec3 force = Vec3::Zero();     ///< (N), from the last force computation
   Vec3 elasticForce = Vec3::Zero();  ///< the same without the contacts' normal damping (N)
   double stiffness = 0.0;        ///< sum of its contacts' normal stiffnesses S_n (N/m)
-  std::optional<WallServo> servo;
+  std::optional<WallServo> servo;  ///< planes only
+  WallShape shape = WallShape::Plane;
+  Cylinder cylinder;             ///< the surface of a Cylinder wall
+  double spin = 0.0;             ///< a cylinder's angular velocity about its axis (rad/s, right-handed)
+  Vec3 torque = Vec3::Zero();    ///< about its reference point (N m), from the last force computation
+
+  /// The point its motion and torque refer to: the plane's point, or the cylinder's axis point.
+  const Vec3& reference() const { return shape == WallShape::Plane ? plane.point : cylinder.point; }
+  /// Velocity of its surface at x (m/s): translation, and a cylinder's spin.
+  Vec3 surfaceVelocity(const Vec3& x) const {
+    return shape == WallShape::Plane ? velocity : Vec3(velocity + spin * cylinder.axis.cross(x - cylinder.point));
+  }
+  /// Signed distance of x from its surface, > 0 on the particles' side (m).
+  double distance(const Vec3& x) const {
+    return shape == WallShape::Plane ? (x - plane.point).dot(plane.normal) : cylinder.distance(x);
+  }
+  void translate(const Vec3& displacement) {
+    if (shape == WallShape::Plane) plane.point += displacement;
+    else cylinder.point += displacement;
+  }
 };
 
 /// In a contact's body B: the wall index with this flag set, particles without.

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 
+#include "sqdem/dynamics/wall.hpp"
 #include "sqdem/geometry/superquadric.hpp"
 
 namespace sqdem {
@@ -15,6 +16,7 @@ enum class PairKind : std::uint8_t {
   EllipsoidPair,     ///< common-normal solve on gauges without powers (n1 = n2 = 2)
   SuperquadricPair,  ///< common-normal solve, general exponents
   ParticleWall,      ///< closed form through the support map
+  ParticleCylinder,  ///< a one-dimensional search (closed form for a sphere); never round
 };
 
 /// Two spheres, or a sphere and a plane: both relative radii are R* = rA rB / (rA + rB) (r on a
@@ -23,13 +25,19 @@ enum class PairKind : std::uint8_t {
 /// elliptic Mindlin is circular Mindlin: no curvatures are computed.
 constexpr bool round(PairKind kind) { return kind == PairKind::SphereSphere || kind == PairKind::SphereWall; }
 /// Body B is a wall.
-constexpr bool withWall(PairKind kind) { return kind == PairKind::SphereWall || kind == PairKind::ParticleWall; }
+constexpr bool withWall(PairKind kind) {
+  return kind == PairKind::SphereWall || kind == PairKind::ParticleWall || kind == PairKind::ParticleCylinder;
+}
 
 inline PairKind pairKind(const Superquadric& A, const Superquadric& B) {
   if (A.isSphere() && B.isSphere()) return PairKind::SphereSphere;
   if (A.isEllipsoid() && B.isEllipsoid()) return PairKind::EllipsoidPair;
   return PairKind::SuperquadricPair;
 }
-inline PairKind wallPairKind(const Superquadric& A) { return A.isSphere() ? PairKind::SphereWall : PairKind::ParticleWall; }
+/// A sphere on a cylinder is not round: the cylinder's curvature differs along and around its axis.
+inline PairKind wallPairKind(const Superquadric& A, WallShape wall) {
+  if (wall == WallShape::Cylinder) return PairKind::ParticleCylinder;
+  return A.isSphere() ? PairKind::SphereWall : PairKind::ParticleWall;
+}
 
 }  // namespace sqdem

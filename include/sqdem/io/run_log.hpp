@@ -2,11 +2,14 @@
 // The CSV log of a run, one row written and flushed at a time (an interrupted run keeps its
 // rows). Columns: time (s), step, stage, kinetic_energy (J), contacts, mean_coordination,
 // solid_fraction, bed_height (m), detector_failures, stress_xx ... stress_yz (Pa, Love-Weber,
-// packing_measures.hpp), and per wall its z (m) and force fx, fy, fz (N).
+// packing_measures.hpp), and per wall the force the particles exert on it, fx, fy, fz (N),
+// after its position: a plane's z (m); a cylinder's axis point x, y, z (m), followed by the
+// torque about that point tx, ty, tz (N m).
 
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "sqdem/world/world.hpp"
 
@@ -15,7 +18,7 @@ namespace sqdem {
 class RunLog {
  public:
   /// Creates (truncates) the file and writes the header; throws std::runtime_error if it cannot.
-  RunLog(const std::filesystem::path& path, std::size_t walls);
+  RunLog(const std::filesystem::path& path, const std::vector<Wall>& walls);
   void row(const World& world, long step, const std::string& stage);
   const std::filesystem::path& path() const { return path_; }
 

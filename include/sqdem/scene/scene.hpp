@@ -54,9 +54,26 @@ struct InteractionSpec {
   double rollingHysteresis = 0.0;  ///< dgamma/gamma of the rolling resistance (0: off, needs haervig_jkr)
 };
 
+/// A wall: a plane (point, normal) or a cylinder (point on the axis, axis, radius, spin).
 struct WallSpec {
+  WallShape shape = WallShape::Plane;
   Vec3 point = Vec3::Zero(), normal = Vec3::UnitZ(), velocity = Vec3::Zero();
+  Vec3 axis = Vec3::UnitY();  ///< unit (cylinder)
+  double radius = 0.0;        ///< (m, cylinder)
+  double spin = 0.0;          ///< angular velocity about the axis (rad/s, cylinder)
   std::uint32_t material = 0;
+
+  /// The engine's wall.
+  Wall wall() const {
+    Wall w;
+    w.plane = Plane{point, normal};
+    w.velocity = velocity;
+    w.material = material;
+    w.shape = shape;
+    w.cylinder = Cylinder{point, axis, radius};
+    w.spin = spin;
+    return w;
+  }
 };
 
 struct InsertionSpec {

@@ -16,6 +16,8 @@ struct Domain {
   Vec3 length() const { return hi - lo; }
   /// Wraps x into [lo, hi) along the periodic directions.
   Vec3 wrap(Vec3 x) const;
+  /// The shortest periodic image of a separation d (d itself along the other directions).
+  Vec3 minimumImage(Vec3 d) const;
 };
 
 }  // namespace sqdem
