@@ -281,5 +281,51 @@ TEST(EngineLaws, NanSphereSticksBelowAndReboundsAboveTheStickingVelocity) {
   }
 }
 
+// Issue 13's plate press on one particle: an NMC sphere (002 Table 1: E 142 GPa, nu 0.25,
+// Y 7.9 GPa, the NMC fits of Eq. 54 for l_max and e_max) between a fixed floor and a plate that
+// moves down at constant speed to 2.5 x the yield overlap per contact (17 % of the radius) and
+// back up until it is free. Slow enough to be quasi-static (a background drag damps the sphere's
+// oscillation; its lag behind equilibrium, m c v / k ~ 2e-13 m, is 2e-7 of the overlap), the two
+// contacts are in series: the same law and the same force, so each carries half the plate's
+// travel, and the plate force against the travel is the single-contact driver's
+// sphere-on-a-wall curve at half the travel, loading and unloading.
+TEST(EngineLaws, BeckerKamlahPlatePressIsTwoDriverContactsInSeries) {
+  omp_set_num_threads(1);
+  const double radius = 5e-6, Y = 7.9e9, dt = 1e-9, speed = 2e-3;
+  const Material nmc{142e9, 0.25, 4750.0, 0.0, 1.0};
+  World world({Superquadric::sphere(radius)}, {nmc}, bigBox(), 0.1 * radius);
+  ContactModel model = world.defaultContactModel(0, 0);
+  model.normal = BeckerKamlahLaw{{.yieldStrength = Y}};
+  world.setContactModel(0, 0, model);
+  world.addWall(Wall{.plane = Plane{Vec3::Zero(), Vec3::UnitZ()}});                     // floor
+  world.addWall(Wall{.plane = Plane{Vec3(0.0, 0.0, 2.0 * radius), -Vec3::UnitZ()}});  // plate
+  world.addParticle(0, 0, Vec3(0.0, 0.0, radius), Quat::Identity());
+  world.setTimeStep(dt);            // 0.2 x the Rayleigh time
+  world.setViscousDamping(2.5e7);   // 1/s
+  cli::DrivenLaw driver({{"type", "becker_kamlah"}, {"yield_strength", Y}}, "becker_kamlah",
+                        {radius, radius, 1.0, 0.5 * radius},
+                        {nmc.youngsModulus, nmc.poissonRatio, nmc.youngsModulus, nmc.poissonRatio}, 2.0 * radius);
+  const double yieldOverlap = driver.yield()->overlap, deepest = 5.0 * yieldOverlap;
+  const long steps = std::lround(deepest / (speed * dt)), sampleEvery = 1000;
+  double worst = 0.0, largest = 0.0, freeTravel = -1.0;
+  Wall &floor = world.walls()[0], &plate = world.walls()[1];
+  for (long s = 1; s <= 2 * steps; ++s) {
+    plate.velocity = Vec3(0.0, 0.0, s <= steps ? -speed : speed);
+    world.step();
+    if (s % sampleEvery != 0 && s != steps) continue;  // and the turning point: the largest overlap
+    const double travel = 2.0 * radius - plate.plane.point.z();
+    const cli::LawSample d = driver.at(0.5 * travel);
+    worst = std::max(worst, std::abs(plate.force.z() - d.force));  // the sphere pushes the plate up: > 0
+    largest = std::max(largest, d.force);
+    if (freeTravel < 0.0 && s > steps && !(d.force > 0.0)) freeTravel = travel;
+  }
+  std::printf("plate press: delta_Y %.3e m, largest force %.4e N, plate - driver %.2e of it, floor + plate %.1e of it; "
+              "the plate is free again at a travel of %.3f delta_Y (two plastic dents)\n",
+              yieldOverlap, largest, worst / largest, std::abs(floor.force.z() + plate.force.z()) / largest,
+              freeTravel / yieldOverlap);
+  EXPECT_LE(worst, 1e-6 * largest);
+  EXPECT_GT(freeTravel, 0.0) << "a permanent thickness reduction";
+}
+
 }  // namespace
 }  // namespace sqdem
