@@ -409,6 +409,8 @@ TEST(Engine, SceneErrorsNameLineKeyAndWhatIsAllowed) {
                    "'walls[1].spin': belongs to a cylinder (axis), not a plane (normal)");
   const std::string withRoller =
       replaced(bedScene, roller, roller + "  - {point: [0, 0, 0.02], axis: [0, 1, 0], radius: 5.0e-3, spin: 3, material: glass}\n");
+  expectSceneError(replaced(bedScene, roller, roller + "  - {point: [0, 0, 0.02], axis: [0, 1, 0], radius: 3.0e-3, material: glass}\n"),
+                   "walls[1]: a cylinder of radius 0.003 m needs its periodic images along x at least");
   expectSceneError(replaced(withRoller, "{name: settle, duration: 0.2}", "{name: settle, duration: 0.2, servo_wall: {wall: 1, pressure: 10, max_speed: 1}}"),
                    "'stages[0].servo_wall.wall': walls[1] is a cylinder; this needs a plane");
   expectSceneError(replaced(bedScene, "count: 60", "count: 60, solid_fraction: 0.1"), "'insert[0]': needs exactly one of count");

@@ -148,6 +148,22 @@ World buildWorld(const Scene& scene) {
                        "plus the skin (" + shortNumber(2.0 * reach) + " m here), or a particle would meet two images of another");
     }
   }
+  // A cylinder acts through its image nearest each particle: the images' spacing normal to the
+  // axis must exceed what one particle can reach of two of them.
+  for (std::size_t k = 0; k < scene.walls.size(); ++k) {
+    const WallSpec& w = scene.walls[k];
+    if (w.shape != WallShape::Cylinder) continue;
+    for (int d = 0; d < 3; ++d) {
+      const double spacing = scene.domain.length()(d) * Vec3::Unit(d).cross(w.axis).norm();
+      const double reach = 2.0 * (w.radius + largest + skin);
+      if (scene.domain.periodic[d] && spacing > 0.0 && spacing < reach) {
+        throw SceneError(scene.path + ": walls[" + std::to_string(k) + "]: a cylinder of radius " + shortNumber(w.radius) +
+                         " m needs its periodic images along " + std::string(1, "xyz"[d]) + " at least " + shortNumber(reach) +
+                         " m apart (2 x (radius + largest bounding radius + skin)); they are " + shortNumber(spacing) +
+                         " m apart: a particle would meet two of them");
+      }
+    }
+  }
   World world(shapes, materials, scene.domain, skin, scene.broadPhase);
   world.setReorderInterval(scene.reorderEvery);
   if (scene.detectorTolerance > 0.0) world.setDetectorControl({.tolerance = scene.detectorTolerance});
