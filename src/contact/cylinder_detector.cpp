@@ -17,7 +17,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <tuple>
 #include <numbers>
 
 #include "sqdem/contact/detector.hpp"
@@ -52,12 +51,15 @@ struct Shadow {  // A seen from the axis, in the plane normal to it
   }
 };
 
-/// The maximum of reach over [-halfWidth, halfWidth] about e1: angle and evaluations.
-std::pair<double, int> maximise(const Shadow& s, double halfWidth, int maxEvaluations) {
-  std::uintmax_t evaluations = static_cast<std::uintmax_t>(maxEvaluations);
+/// The maximum of reach over [-halfWidth, halfWidth] about e1: its angle; adds the evaluations
+/// and notes whether Brent ran out of them.
+double maximise(const Shadow& s, double halfWidth, int maxEvaluations, int& evaluations, bool& exhausted) {
+  std::uintmax_t used = static_cast<std::uintmax_t>(maxEvaluations);
   const auto best = boost::math::tools::brent_find_minima([&](double t) { return -s.reach(t); }, -halfWidth,
-                                                          halfWidth, angleBits, evaluations);
-  return {best.first, static_cast<int>(evaluations)};
+                                                          halfWidth, angleBits, used);
+  evaluations += static_cast<int>(used);
+  exhausted = exhausted || used >= static_cast<std::uintmax_t>(maxEvaluations);
+  return best.first;
 }
 
 /// The common normal near a maximum found by Brent (to ~1e-8 rad), to round-off: the root of f'
@@ -92,9 +94,6 @@ Polished polish(const Shadow& s, double theta, int& evaluations) {
   return {n, first + lambda * (last - first)};
 }
 
-/// A unit vector normal to u.
-Vec3 anyNormalTo(const Vec3& u) { return u.unitOrthogonal(); }
-
 }  // namespace
 
 ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const Cylinder& roller,
@@ -108,7 +107,8 @@ ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const Cy
     return g;  // Separated
   }
   const Mat3 R = poseA.rotation();
-  Vec3 e1 = distance > 0.0 ? Vec3(d / distance) : anyNormalTo(u);
+  const Vec3 cold = distance > 0.0 ? Vec3(d / distance) : u.unitOrthogonal();  // towards the axis
+  Vec3 e1 = cold;
   double halfWidth = 0.5 * std::numbers::pi;
   if (previous != nullptr && !A.isSphere()) {
     const Vec3 n = R * A.outwardNormal(previous->localPointA);
@@ -121,14 +121,14 @@ ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const Cy
   Shadow shadow{A, R, d, e1, u.cross(e1)};
   double theta = 0.0;  // a sphere's support point is its centre + r n: n = d / |d| exactly
   int evaluations = 0;
+  bool exhausted = false;
   if (!A.isSphere()) {
-    std::tie(theta, evaluations) = maximise(shadow, halfWidth, settings.maxIterations);
+    theta = maximise(shadow, halfWidth, settings.maxIterations, evaluations, exhausted);
     if (halfWidth < 0.5 * std::numbers::pi && std::abs(theta) > 0.99 * halfWidth) {  // left the warm bracket
-      shadow.e1 = distance > 0.0 ? Vec3(d / distance) : anyNormalTo(u);
-      shadow.e2 = u.cross(shadow.e1);
-      int more = 0;
-      std::tie(theta, more) = maximise(shadow, 0.5 * std::numbers::pi, settings.maxIterations);
-      evaluations += more;
+      shadow.e1 = cold;
+      shadow.e2 = u.cross(cold);
+      exhausted = false;
+      theta = maximise(shadow, 0.5 * std::numbers::pi, settings.maxIterations, evaluations, exhausted);
     }
   }
   const auto [n, s] = A.isSphere() ? Polished{shadow.normal(theta), shadow.support(shadow.normal(theta))}
@@ -141,7 +141,7 @@ ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const Cy
   }
   if (-gap >= A.halfExtents().minCoeff()) {
     g.status = ContactStatus::Degenerate;  // deeper than A's thinnest half-width: the axis may be inside A
-  } else if (evaluations >= settings.maxIterations) {
+  } else if (exhausted) {
     g.status = ContactStatus::MaxIterations;
     return g;  // no overlap, as every unresolved pair
   } else {
