@@ -6,6 +6,7 @@
 #include <variant>
 
 #include "contact_force.hpp"
+#include "contact_work.hpp"
 #include "sqdem/contact/detector.hpp"
 #include "sqdem/interaction/interactions.hpp"
 
@@ -148,6 +149,7 @@ void runGroup(const std::vector<std::uint32_t>& members, const ContactModel& pai
   const ContactModel model = asRun(pairModel, Kind);
   const bool cached = cachesCurvatures(model, Kind);
   const double cosHalfAngle = std::cos(0.5 * model.curvatureTolerance);
+  const bool ledger = s.withEnergy;
   long long calls = 0, iterations = 0, failures = 0, deep = 0, lost = 0, invalid = 0;
   long long byStatus[contactStatusCount] = {};
   const auto count = static_cast<std::ptrdiff_t>(members.size());
@@ -155,6 +157,8 @@ void runGroup(const std::vector<std::uint32_t>& members, const ContactModel& pai
   for (std::ptrdiff_t m = 0; m < count; ++m) {
     const std::uint32_t k = members[m];
     if (m + prefetchDistance < count) s.prefetch(members[m + prefetchDistance]);
+    const detail::ContactLoad before = ledger ? detail::ContactLoad{s.normal[k], s.force[k], s.load[k]} : detail::ContactLoad{};
+    const Vec3 pointBefore = ledger ? s.point[k] : Vec3::Zero();
     // Round kinds solve a RoundContact (no body-frame points, no curvatures), the others a
     // ContactGeometry: both carry what the store keeps of the geometry.
     auto g = [&] {
@@ -179,6 +183,7 @@ void runGroup(const std::vector<std::uint32_t>& members, const ContactModel& pai
     // detached contact inside a plastic dent).
     const double range = normalRange(law, history.normal);
     ContactForce force{.acting = false};
+    double stored = 0.0;
     if (g.converged() && g.overlap > -range) {
       const ContactKinematics motion = kinematics<Kind>(scene, s, k, s.point[k]);
       const LawGeometry view = [&] {
@@ -191,6 +196,9 @@ void runGroup(const std::vector<std::uint32_t>& members, const ContactModel& pai
       }();
       force = detail::contactForce(model, law, view, motion, history, scene.dt);
       invalid += !force.valid;
+      if (ledger && force.acting) {
+        stored = storedEnergy(law, view.contact, g.overlap, history.normal, force.normal - force.normalDamping);
+      }
     } else {
       lost += std::isinf(range);  // an adhesive contact its law still held
       history = {};
@@ -204,6 +212,16 @@ void runGroup(const std::vector<std::uint32_t>& members, const ContactModel& pai
     s.acting[k] = force.acting;
     s.force[k] = force.onB;
     s.load[k] = {force.normal, force.normalDamping, force.normalStiffness, force.area};
+    if (ledger) {
+      ContactEnergy& e = s.energy[k];
+      e = {};
+      if (before.force != Vec3::Zero() || force.acting) {  // a load before or after the step did work
+        const Vec3 at = g.converged() ? s.point[k] : pointBefore;
+        e = detail::contactWork(before, {s.normal[k], s.force[k], s.load[k]}, kinematics<Kind>(scene, s, k, at).relativeVelocity,
+                                scene.dt);
+      }
+      e.stored = stored;
+    }
     if constexpr (!withWall(Kind)) {
       ++calls;
       if constexpr (!round(Kind)) iterations += g.iterations;

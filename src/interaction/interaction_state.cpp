@@ -11,6 +11,7 @@ namespace sqdem {
 void Interactions::writeState(CheckpointWriter& out) const {
   out.put(static_cast<std::uint8_t>(store_.withRolling));
   out.put(static_cast<std::uint8_t>(store_.withCurvatureCache));
+  out.put(static_cast<std::uint8_t>(store_.withEnergy));
   ContactStore::forEachArray(store_, [&](const auto& array) { out.putVector(array); });
   out.putVector(interacting_);
 }
@@ -19,12 +20,15 @@ Interactions Interactions::readState(CheckpointReader& in, const InteractionScen
   Interactions out;
   ContactStore& s = out.store_;
   const ContactStore expected = emptyStore(scene);
-  std::uint8_t rolling = 0, cache = 0;
+  std::uint8_t rolling = 0, cache = 0, energy = 0;
   in.get(rolling);
   in.get(cache);
-  requireIntact(rolling == expected.withRolling && cache == expected.withCurvatureCache, "optional contact arrays");
+  in.get(energy);
+  requireIntact(rolling == expected.withRolling && cache == expected.withCurvatureCache && energy == expected.withEnergy,
+                "optional contact arrays");
   s.withRolling = expected.withRolling;
   s.withCurvatureCache = expected.withCurvatureCache;
+  s.withEnergy = expected.withEnergy;
   const std::uint64_t anyLength = ~std::uint64_t{0};  // bounded by the bytes left
   std::uint64_t count = 0;
   bool first = true;

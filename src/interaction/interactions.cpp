@@ -28,6 +28,7 @@ ContactStore emptyStore(const InteractionScene& scene) {
   const bool anyNonRound =
       std::any_of(scene.shapes.begin(), scene.shapes.end(), [](const Superquadric& shape) { return !shape.isSphere(); }) ||
       std::any_of(scene.walls.begin(), scene.walls.end(), [](const Wall& w) { return w.shape != WallShape::Plane; });
+  s.withEnergy = scene.energy;
   for (const ContactModel& m : scene.models) {
     s.withRolling = s.withRolling || m.rolling.has_value();
     s.withCurvatureCache = s.withCurvatureCache || (anyNonRound && m.usesCurvatures() && m.curvatureTolerance > 0.0);
@@ -35,9 +36,6 @@ ContactStore emptyStore(const InteractionScene& scene) {
   return s;
 }
 
-namespace {
-
-}  // namespace
 
 ContactStatistics& ContactStatistics::operator+=(const ContactStatistics& o) {
   detectorCalls += o.detectorCalls;
@@ -69,7 +67,10 @@ void Interactions::setCandidates(const std::vector<CandidateKey>& candidates, co
 
 void Interactions::fitStore(const InteractionScene& scene) {
   const ContactStore wanted = emptyStore(scene);
-  if (wanted.withRolling == store_.withRolling && wanted.withCurvatureCache == store_.withCurvatureCache) return;
+  if (wanted.withRolling == store_.withRolling && wanted.withCurvatureCache == store_.withCurvatureCache &&
+      wanted.withEnergy == store_.withEnergy) {
+    return;
+  }
   ContactStore fitted = wanted;
   for (std::size_t k = 0; k < store_.size(); ++k) {
     fitted.add(store_.a[k], store_.b[k], store_.shift[k]);
@@ -119,6 +120,17 @@ void Interactions::renumber(const std::vector<std::uint32_t>& slotOf, const Inte
   }
   regroup(scene);
   indexInvolvement(scene.particles.size());
+}
+
+ContactEnergy Interactions::energy() const {
+  ContactEnergy sum;
+  for (const ContactEnergy& e : store_.energy) {
+    sum.stored += e.stored;
+    sum.normal += e.normal;
+    sum.damping += e.damping;
+    sum.tangential += e.tangential;
+  }
+  return sum;
 }
 
 std::size_t Interactions::bytes() const {

@@ -6,16 +6,21 @@
 
 namespace sqdem {
 
-RunLog::RunLog(const std::filesystem::path& path, const std::vector<Wall>& walls) : path_(path), out_(path, std::ios::trunc) {
+RunLog::RunLog(const std::filesystem::path& path, const World& world) : path_(path), out_(path, std::ios::trunc) {
   if (!out_) throw std::runtime_error("cannot write '" + path.string() + "'");
   out_.precision(12);
   out_ << "time,step,stage,kinetic_energy,contacts,mean_coordination,solid_fraction,bed_height,detector_failures"
           ",stress_xx,stress_yy,stress_zz,stress_xy,stress_xz,stress_yz";
+  const std::vector<Wall>& walls = world.walls();
   for (std::size_t w = 0; w < walls.size(); ++w) {
     const std::string name = ",wall" + std::to_string(w);
     if (walls[w].shape == WallShape::Cylinder) out_ << name << "_x" << name << "_y";
     out_ << name << "_z" << name << "_fx" << name << "_fy" << name << "_fz";
     if (walls[w].shape == WallShape::Cylinder) out_ << name << "_tx" << name << "_ty" << name << "_tz";
+  }
+  if (world.energyLedger()) {
+    out_ << ",work_bodies,work_gravity,elastic_energy,plastic_dissipation,damping_dissipation,tangential_dissipation"
+            ",drag_dissipation,energy_residual";
   }
   out_ << std::endl;
 }
@@ -31,6 +36,10 @@ void RunLog::row(const World& world, long step, const std::string& stage) {
     if (w.shape == WallShape::Cylinder) out_ << ',' << x.x() << ',' << x.y();
     out_ << ',' << x.z() << ',' << w.force.x() << ',' << w.force.y() << ',' << w.force.z();
     if (w.shape == WallShape::Cylinder) out_ << ',' << w.torque.x() << ',' << w.torque.y() << ',' << w.torque.z();
+  }
+  if (const auto& e = world.energyLedger()) {
+    out_ << ',' << e->bodies << ',' << e->gravity << ',' << e->stored << ',' << e->plastic() << ',' << e->damping << ','
+         << e->tangential << ',' << e->drag << ',' << e->residual(world.kineticEnergy());
   }
   out_ << std::endl;
 }

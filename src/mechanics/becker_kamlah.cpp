@@ -145,6 +145,12 @@ NormalResponse BeckerKamlahLaw::force(const NormalContact& c, double overlap, Hi
           .regime = describe(s.regime)};
 }
 
+double BeckerKamlahLaw::storedEnergy(const NormalContact& c, double overlap, const History& h, double force) const {
+  const BeckerFactors geometry = beckerFactors(c.radii);
+  const BeckerKamlah law(geometry, at(c, geometry));
+  return 0.4 * force * (overlap - law.dentAfter(h.plastic.maxOverlap).plasticOverlap);
+}
+
 NormalResponse BeckerKamlahLaw::adhesive(const BeckerKamlah& law, const NormalContact& c, double overlap, History& h) const {
   if (!h.attached && overlap < 0.0) return {.acting = false};
   const BeckerKamlahState s = law.evaluate(overlap, h.plastic);  // the plastic state

@@ -1,5 +1,6 @@
 // sceneFingerprint (scene_fingerprint.hpp): every field of the validated scene but its path and output
-// settings, fed in declaration order to a CRC-64. A new Scene field must be added here.
+// settings (except the energy ledger, part of the world's state), fed in declaration order to a
+// CRC-64. A new Scene field must be added here.
 
 #include "sqdem/scene/scene_fingerprint.hpp"
 #include "sqdem/world/checkpoint_file.hpp"
@@ -58,6 +59,7 @@ std::uint64_t sceneFingerprint(const Scene& scene) {
           h.n(st.servoWall.value_or(~std::size_t{0})), st.servo.pressure, st.servo.maxSpeed);
     for (const auto& [t, x] : st.wallPath.points) h.all(t, x);
   }
+  h.all(h.n(scene.output.energy));
   return h.f.value();
 }
 

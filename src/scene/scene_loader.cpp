@@ -595,7 +595,7 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
   }
 
   if (const YAML::Node out = root["output"]) {
-    r.allowOnly(out, "output", {"frames", "log_every", "contacts", "checkpoint_every_steps", "checkpoint_every_minutes"});
+    r.allowOnly(out, "output", {"frames", "log_every", "contacts", "checkpoint_every_steps", "checkpoint_every_minutes", "energy"});
     scene.output.frames = static_cast<std::size_t>(r.integer(out, "frames", "output", 0.0, 1e5, 20.0));
     scene.output.logEvery = static_cast<std::size_t>(r.integer(out, "log_every", "output", 0.0, 1e12, 0.0));
     scene.output.contacts = r.flag(out, "contacts", "output", true);
@@ -603,6 +603,15 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
     scene.output.checkpointMinutes = r.number(out, "checkpoint_every_minutes", "output", scene.output.checkpointMinutes);
     if (!(scene.output.checkpointMinutes >= 0.0)) {
       r.fail(out["checkpoint_every_minutes"], "output.checkpoint_every_minutes", "must be >= 0 (wall-clock minutes, 0: off)");
+    }
+    scene.output.energy = r.flag(out, "energy", "output", false);
+    for (std::size_t k = 0; scene.output.energy && k < scene.interactions.size(); ++k) {
+      if (!storesEnergy(scene.interactions[k].normal)) {
+        r.fail(out["energy"], "output.energy",
+               "the energy ledger needs every interaction's normal law to state its stored elastic energy "
+               "(elliptic_hertz, volume_sphere_hertz, becker_kamlah without surface_energy); interactions[" +
+                   std::to_string(k) + "] uses " + scene.interactions[k].normalName);
+      }
     }
   }
   return scene;

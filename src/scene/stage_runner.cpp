@@ -75,7 +75,7 @@ RunReport runStages(const Scene& scene, World& world, const RunPlan& plan, const
                     const RunOutput& output, RunObserver& observer, const volatile std::sig_atomic_t& stop) {
   const bool fresh = start.totalSteps == 0 && start.stage == 0 && start.stepInStage == 0;
   VtkSeries vtk(output.directory, output.name, scene.output.contacts);
-  RunLog log(output.directory / (output.name + ".csv"), world.walls());
+  RunLog log(output.directory / (output.name + ".csv"), world);
   RunReport report;
   report.log = log.path();
   report.latestCheckpoint = output.directory / (output.name + "_latest.checkpoint");

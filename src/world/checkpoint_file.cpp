@@ -13,7 +13,7 @@ namespace sqdem {
 namespace {
 
 constexpr char magic[8] = {'s', 'q', 'd', 'e', 'm', 'C', 'K', 'P'};
-constexpr std::uint32_t formatVersion = 7;
+constexpr std::uint32_t formatVersion = 8;
 constexpr std::size_t headerSize = sizeof magic + 4 + 8 + 8 + 8 + 4;
 constexpr std::uint64_t largestPayload = std::uint64_t{1} << 40;  // 1 TiB: anything larger is corrupt
 
@@ -57,7 +57,7 @@ std::uint64_t buildFingerprint() {
   Fingerprint f;
   for (const std::size_t size : {sizeof(Wall), sizeof(ContactStatistics), sizeof(CandidatePair), sizeof(Vec3),
                                  sizeof(Quat), sizeof(Vec4), sizeof(ContactStatus), sizeof(NormalHistory),
-                                 sizeof(NormalLoad)}) {
+                                 sizeof(NormalLoad), sizeof(ContactEnergy), sizeof(EnergyLedger)}) {
     f(static_cast<std::uint64_t>(size));
   }
   return f(static_cast<std::uint64_t>(formatVersion)).value();

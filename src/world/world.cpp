@@ -127,6 +127,7 @@ void World::computeForces() {
   timing_.contacts += seconds(reduction - contactsStart);
   interactions_.reduce(p, gravity_, viscousDamping_, walls_);
   forcesCurrent_ = true;
+  if (ledger_ && !ledger_->started) ledger_->start(*this);
   timing_.reduction += seconds(Clock::now() - reduction);
 }
 
@@ -149,11 +150,19 @@ void World::step() {
   }
   time_ += h;
   timing_.integration += seconds(Clock::now() - start);
+  const std::vector<Wall> before = ledger_ ? walls_ : std::vector<Wall>{};
   computeForces();
+  if (ledger_) ledger_->addStep(*this, before);
   const auto kickStart = Clock::now();
 #pragma omp parallel for schedule(static)
   for (std::ptrdiff_t i = 0; i < n; ++i) kick(p, i, 0.5 * h);
   timing_.integration += seconds(Clock::now() - kickStart);
+}
+
+void World::enableEnergyLedger() {
+  if (forcesCurrent_) throw std::logic_error("World: the energy ledger starts before the first force computation");
+  ledger_.emplace();
+  interactions_.fitStore(interactionScene());
 }
 
 double World::wallArea(std::size_t w) const {

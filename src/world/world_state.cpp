@@ -29,6 +29,8 @@ void World::writeState(CheckpointWriter& out) const {
   out.put(dt_);
   out.put(time_);
   out.put(forcesCurrent_);
+  out.put(ledger_.has_value());
+  if (ledger_) out.put(*ledger_);
 }
 
 void World::readState(CheckpointReader& in) {
@@ -63,7 +65,8 @@ void World::readState(CheckpointReader& in) {
     requireIntact(w.shape == WallShape::Plane || w.shape == WallShape::Cylinder, "wall shape");
   }
   Interactions interactions = Interactions::readState(
-      in, {restored, shapes_, boundingRadius, wallRecords, models_, materials_.size(), neighbours_.skin(), dt_, detector_});
+      in, {restored, shapes_, boundingRadius, wallRecords, models_, materials_.size(), neighbours_.skin(), dt_, detector_,
+           ledger_.has_value()});
   in.getVector(reference, n);
   in.getVector(candidates, anyLength);
   in.get(builds);
@@ -79,6 +82,11 @@ void World::readState(CheckpointReader& in) {
   in.get(dt);
   in.get(time);
   in.get(forcesCurrent);
+  bool hasLedger = false;
+  EnergyLedger ledger;
+  in.get(hasLedger);
+  requireIntact(hasLedger == ledger_.has_value(), "energy ledger");
+  if (hasLedger) in.get(ledger);
   requireIntact(in.left() == 0, "trailing bytes");
 
   // Every index the engine will follow.
@@ -102,6 +110,7 @@ void World::readState(CheckpointReader& in) {
   dt_ = dt;
   time_ = time;
   forcesCurrent_ = forcesCurrent;
+  if (hasLedger) ledger_ = ledger;
 }
 
 }  // namespace sqdem

@@ -40,6 +40,9 @@ refused "duplicate key" "dupkey.yaml:[0-9]+: 'materials.glass.density': given tw
   "$(variant dupkey 's/density: 2500,/density: 2500, density: 5000,/')"
 refused "aspect_b -1" "aspectb.yaml:[0-9]+: 'shapes.bead.aspect_b': must be > 0" "$(variant aspectb 's/aspect_b: \[0.7, 1.0\]/aspect_b: -1/')"
 refused "directory as scene" "is a directory, not a scene file" "$scratch"
+refused "energy ledger with a law that states no stored energy" \
+  "'output.energy': the energy ledger needs every interaction's normal law to state its stored elastic energy .*interactions\[0\] uses haervig_jkr" \
+  "$(variant ledger 's/  - materials: \[glass, glass\]/  - {materials: [glass, glass], normal: haervig_jkr, surface_energy: 0.01}/; s/^output: {frames: 4,/output: {energy: true, frames: 4,/')"
 expect_error "--out twice" 2 "'--out' is given twice" "$sqdem" run "$base" --out "$out" --out "$out"
 
 # A domain in m with particles in um runs (the cell grid adapts) and says so.

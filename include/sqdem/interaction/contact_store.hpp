@@ -7,9 +7,12 @@
 //   geometry     normal, overlap, contact point (the reduction's lever arm)
 //   histories    tangential spring, the normal law's record, the rolling displacement
 //   law cache    the curvature-derived law constants (curvature_cache.hpp)
-//   load         acting, force and moment on B, the normal force's parts and the area
+//   load         acting, force and moment on B, the normal force's parts and the area (carried
+//                with the state: the energy ledger integrates from the last step's load)
+//   energy       the contact's stored energy and the work it absorbed in the last step
 // The rolling displacement and the moment exist only in a store made withRolling, the law cache
-// only withCurvatureCache (a scene without rolling resistance or caching stores none of them).
+// only withCurvatureCache, the energy only withEnergy (a scene without rolling resistance,
+// caching or an energy ledger stores none of them).
 // Curvatures themselves are not stored: the fused kernels hand them from the detector to the
 // law within one contact.
 
@@ -30,6 +33,17 @@ struct NormalLoad {
   double damping = 0.0;    ///< its viscous part (N)
   double stiffness = 0.0;  ///< S_n of the elastic part (N/m)
   double area = 0.0;       ///< contact area (m^2)
+};
+
+/// A contact's share of the energy ledger (world/energy_ledger.hpp), all in J: the elastic energy
+/// its normal law stores now, and the work the contact absorbed from the bodies over the last
+/// step (trapezoidal in its forces, with the relative velocity of the step's drift), split by
+/// the force that did it.
+struct ContactEnergy {
+  double stored = 0.0;      ///< StoredEnergyLaw::storedEnergy
+  double normal = 0.0;      ///< by the rate-independent normal force: stored or plastically dissipated
+  double damping = 0.0;     ///< by the normal viscous force
+  double tangential = 0.0;  ///< by the tangential force and the rolling moment: springs and sliding
 };
 
 struct ContactStore {
@@ -54,9 +68,11 @@ struct ContactStore {
   std::vector<Vec3> force;           ///< on B (N); A receives -force
   std::vector<Vec3> moment;          ///< pure moment on B (N m), withRolling only
   std::vector<NormalLoad> load;
+  std::vector<ContactEnergy> energy;  ///< withEnergy only
 
   bool withRolling = false;
   bool withCurvatureCache = false;
+  bool withEnergy = false;
 
   std::size_t size() const { return a.size(); }
   bool onWall(std::size_t k) const { return (b[k] & wallFlag) != 0; }
@@ -67,7 +83,8 @@ struct ContactStore {
   static constexpr auto stateArrays =
       std::tuple{&ContactStore::status, &ContactStore::localA, &ContactStore::localB, &ContactStore::separation,
                  &ContactStore::normal, &ContactStore::overlap, &ContactStore::point, &ContactStore::spring,
-                 &ContactStore::normalHistory, &ContactStore::rolling, &ContactStore::curvatureCache};
+                 &ContactStore::normalHistory, &ContactStore::rolling, &ContactStore::curvatureCache,
+                 &ContactStore::force, &ContactStore::moment, &ContactStore::load};
   /// Calls f(array) for every array, in a fixed order: the one list that checkpoints,
   /// re-ordering and resizing use, so a new field cannot be forgotten there.
   template <typename Store, typename F>
@@ -77,13 +94,12 @@ struct ContactStore {
     f(s.shift);
     std::apply([&](auto... member) { (f(s.*member), ...); }, stateArrays);
     f(s.acting);
-    f(s.force);
-    f(s.moment);
-    f(s.load);
+    f(s.energy);
   }
   /// Whether an array (one of this store's) is kept: all but the optional ones (above).
   bool keeps(const void* array) const {
     if (array == &rolling || array == &moment) return withRolling;
+    if (array == &energy) return withEnergy;
     return array != &curvatureCache || withCurvatureCache;
   }
 
@@ -105,6 +121,7 @@ struct ContactStore {
     ahead(acting), ahead(force), ahead(load);
     if (withRolling) ahead(rolling), ahead(moment);
     if (withCurvatureCache) ahead(curvatureCache);
+    if (withEnergy) ahead(energy);
   }
   /// Room for n contacts in every kept array.
   void reserve(std::size_t n);

@@ -66,6 +66,7 @@ struct InteractionScene {
   double skin = 0.0;  ///< detector cut-off (m): gaps within it are solved, for warm starts
   double dt = 0.0;    ///< time step (s)
   DetectorControl detector;
+  bool energy = false;  ///< the contacts account their energy (ContactEnergy)
 };
 
 /// A candidate pair for Interactions::setCandidates: b a particle slot or wallFlag | wall.
@@ -101,6 +102,9 @@ class Interactions {
   }
   const ContactStore& store() const { return store_; }
   std::size_t actingCount() const { return interacting_.size(); }
+  /// The contacts' ContactEnergy of the last computation summed in key order (a store made
+  /// withEnergy; zero otherwise).
+  ContactEnergy energy() const;
   /// Bytes held (store, groups, particle index, per-particle speed bounds).
   std::size_t bytes() const;
 

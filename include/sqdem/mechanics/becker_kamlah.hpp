@@ -135,6 +135,11 @@ struct BeckerKamlahLaw {
   /// The parameters at this contact: E*, and l_max, e_max from the NMC fits when not given.
   BeckerKamlahParameters at(const NormalContact& c, const BeckerFactors& geometry) const;
   NormalResponse force(const NormalContact& c, double overlap, History& h) const;
+  /// Without adhesion: the contact unloads along the Hertz curve of its dent (Eq. 49; at
+  /// delta = delta_* also while it yields), whose integral from delta_p is 2/5 F (delta -
+  /// delta_p) (J); what the dent took beyond that is dissipated.
+  bool storesEnergy() const { return surfaceEnergy == 0.0; }
+  double storedEnergy(const NormalContact& c, double overlap, const History& h, double force) const;
   double range(const History& h) const;
   /// With adhesion: 4 |delta_d| of the JKR contact of radius R, covering dents of radius up to
   /// 64 R (delta_d ~ R^1/3); else 0.

@@ -18,6 +18,9 @@ struct HertzLaw {
             .stiffness = 2.0 * c.effectiveModulus * gamma * sqrtRc * sqrtDelta,
             .area = std::numbers::pi * c.radii.Rc * c.factors.beta * overlap};
   }
+  /// The integral of F over the overlap: 2/5 F delta (J).
+  bool storesEnergy() const { return true; }
+  double storedEnergy(const NormalContact&, double overlap, const History&, double force) const { return 0.4 * force * overlap; }
   double range(const History&) const { return 0.0; }
   double reach(double, double) const { return 0.0; }
 };

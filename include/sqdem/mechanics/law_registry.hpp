@@ -73,6 +73,29 @@ inline double normalRange(const NormalLaw& law, const NormalHistory& slot) {
   return std::visit([&](const auto& l) { return normalRange(l, slot); }, law);
 }
 
+/// Whether the law states its contacts' stored energy (StoredEnergyLaw): the energy ledger
+/// needs it of every law in a scene.
+inline bool storesEnergy(const NormalLaw& law) {
+  return std::visit([](const auto& l) {
+    if constexpr (StoredEnergyLaw<std::decay_t<decltype(l)>>) {
+      return l.storesEnergy();
+    } else {
+      return false;
+    }
+  }, law);
+}
+
+/// The stored energy (J) of a contact whose law just gave `force` (N) at this overlap; 0 for a
+/// law that does not state it.
+template <NormalLawComponent Law>
+double storedEnergy(const Law& law, const NormalContact& c, double overlap, const NormalHistory& slot, double force) {
+  if constexpr (StoredEnergyLaw<Law>) {
+    return law.storedEnergy(c, overlap, slot.load<typename Law::History>(), force);
+  } else {
+    return 0.0;
+  }
+}
+
 /// reach(E*, R) of normal_law.hpp (m); throws std::invalid_argument when the law admits no
 /// contact of relative radius R.
 inline double normalReach(const NormalLaw& law, double effectiveModulus, double R) {

@@ -13,6 +13,8 @@
 //   reach(E*, R)                       a bound of range() over every state and every contact
 //                                      whose relative radii are at most R (m): the candidate
 //                                      search and the detector's cut-off reach that far.
+// A law may also state the elastic energy its contact stores (StoredEnergyLaw, below): what the
+// energy ledger (world/energy_ledger.hpp) needs to tell stored from dissipated work.
 
 #include <array>
 #include <string_view>
@@ -50,6 +52,17 @@ concept NormalLawComponent = std::is_trivially_copyable_v<typename L::History> &
       { law.force(c, 0.0, h) } -> std::same_as<NormalResponse>;
       { law.range(std::as_const(h)) } -> std::convertible_to<double>;
       { law.reach(0.0, 0.0) } -> std::convertible_to<double>;
+    };
+
+/// A law that knows the elastic energy of its contacts: storedEnergy(contact, overlap, history,
+/// force) (J) is the work the contact gives back when unloaded from this state (history and
+/// force as force() left them), where storesEnergy() says the law's parameters allow the
+/// statement (e.g. not for an adhesive variant).
+template <class L>
+concept StoredEnergyLaw = NormalLawComponent<L> &&
+    requires(const L& law, const NormalContact& c, const typename L::History& h) {
+      { law.storesEnergy() } -> std::same_as<bool>;
+      { law.storedEnergy(c, 0.0, h, 0.0) } -> std::convertible_to<double>;
     };
 
 /// A contact's normal-law history record: fixed size, so contact records stay flat and

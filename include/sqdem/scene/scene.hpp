@@ -122,6 +122,7 @@ struct OutputSpec {
   bool contacts = true;         ///< write the contact network (.vtp)
   std::uint64_t checkpointSteps = 0;  ///< also write <name>_latest.checkpoint every N steps (0: off)
   double checkpointMinutes = 10.0;    ///< ... and every M wall-clock minutes (0: off)
+  bool energy = false;          ///< keep an energy ledger (world/energy_ledger.hpp) and log it
 };
 
 struct Scene {

@@ -19,6 +19,7 @@
 #include "sqdem/dynamics/wall.hpp"
 #include "sqdem/geometry/superquadric.hpp"
 #include "sqdem/interaction/interactions.hpp"
+#include "sqdem/world/energy_ledger.hpp"
 #include "sqdem/world/neighbour_list.hpp"
 
 namespace sqdem {
@@ -73,6 +74,12 @@ class World {
   /// Background drag F = -c m v (c in 1/s, translation only; 0 = off): settling in a viscous
   /// medium with terminal velocity |g|/c, a declared packing aid.
   void setViscousDamping(double c) { viscousDamping_ = c; }
+  double viscousDamping() const { return viscousDamping_; }
+  /// Keeps an energy ledger (energy_ledger.hpp) from the first force computation on; the
+  /// contacts then account their work (a cost per contact and step). Call before it.
+  void enableEnergyLedger();
+  /// The ledger, when enabled.
+  const std::optional<EnergyLedger>& energyLedger() const { return ledger_; }
   /// The detector's tolerance and warm starts (interactions.hpp; defaults: 1e-10, on).
   void setDetectorControl(const DetectorControl& control) { detector_ = control; }
   const DetectorControl& detectorControl() const { return detector_; }
@@ -129,7 +136,8 @@ class World {
   const ContactModel& model(std::uint32_t ma, std::uint32_t mb) const { return models_[ma * materials_.size() + mb]; }
   /// What the interaction layer reads of this world.
   InteractionScene interactionScene() const {
-    return {particles_, shapes_, boundingRadius_, walls_, models_, materials_.size(), neighbours_.skin(), dt_, detector_};
+    return {particles_, shapes_,    boundingRadius_, walls_, models_, materials_.size(), neighbours_.skin(),
+            dt_,        detector_, ledger_.has_value()};
   }
   /// The candidate list from the neighbour list and the walls within reach, carrying the
   /// histories of persisting pairs; kept until the next rebuild (particles or walls moved more
@@ -154,6 +162,7 @@ class World {
   Vec3 gravity_ = Vec3::Zero();
   double viscousDamping_ = 0.0;
   DetectorControl detector_;
+  std::optional<EnergyLedger> ledger_;
   int reorderInterval_ = 0;
   double dt_ = 0.0, time_ = 0.0;
   bool forcesCurrent_ = false;
