@@ -15,15 +15,13 @@
 #include <regex>
 #include <sstream>
 
-#include <spawn.h>
-#include <unistd.h>
-#include <sys/wait.h>
 
 #include "commands.hpp"
 #include "driven_law.hpp"
 #include "json_input.hpp"
 #include "sqdem/contact/detector.hpp"
 #include "sqdem/io/atomic_file.hpp"
+#include "sqdem/io/gnuplot.hpp"
 #include "sqdem/mechanics/mindlin_deresiewicz.hpp"
 
 namespace sqdem::cli {
@@ -219,24 +217,6 @@ std::string readTitle(const json& input, const std::string& fallback) {
   return title;
 }
 
-/// Runs `gnuplot -e "output='<output>'" script` in `directory` without a shell (no user text is
-/// ever parsed as a command; output is a validated file name). Returns gnuplot's exit status, or
-/// -1 when gnuplot is not installed.
-int runGnuplot(const fs::path& directory, const std::string& script, const std::string& output) {
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addchdir_np(&actions, directory.c_str());
-  std::string program = "gnuplot", option = "-e", assignment = "output='" + output + "'", argument = script;
-  char* argv[] = {program.data(), option.data(), assignment.data(), argument.data(), nullptr};
-  pid_t pid = 0;
-  const int spawned = posix_spawnp(&pid, "gnuplot", &actions, nullptr, argv, environ);
-  posix_spawn_file_actions_destroy(&actions);
-  if (spawned != 0) return -1;
-  int status = 0;
-  if (waitpid(pid, &status, 0) != pid) return 1;
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 1;
-}
-
 struct CurveResult {
   std::string label;
   std::string csv;
@@ -375,10 +355,7 @@ int runContact(const std::string& inputPath, const fs::path& outDir, bool allowD
   const int xColumn = tangentialPlot ? 8 : 3, yColumn = tangentialPlot ? 9 : 4;
   std::ostringstream gp;
   gp << "# gnuplot script written by `sqdem contact`; run: gnuplot " << name << ".gp\n"
-     << "set terminal pngcairo size 1000,650 enhanced font ',11'\n"
-     << "# sqdem sets 'output' to a temporary name and renames the PNG when gnuplot succeeded\n"
-     << "if (!exists(\"output\")) output = '" << name << ".png'\n"
-     << "set output output\n"
+     << gnuplotPreamble(name)
      << "set datafile separator ','\nset key top left\nset grid\n"
      << "set title '" << title << "' noenhanced\n"
      << "set xlabel '" << xLabel << "' noenhanced\nset ylabel '" << yLabel << "' noenhanced\n"
@@ -388,21 +365,13 @@ int runContact(const std::string& inputPath, const fs::path& outDir, bool allowD
        << "):($" << yColumn << "/" << csvNumber(ys) << ") with lines lw 2 title '" << results[i].label << "' noenhanced";
   }
   gp << "\n";
-  writeFileAtomically(outDir / (name + ".gp"), gp.str());
-
   summary["gnuplot_script"] = (outDir / (name + ".gp")).string();
   summary["plot"] = nullptr;
-  const int gnuplot = runGnuplot(outDir, name + ".gp", name + ".png.tmp");
-  if (gnuplot < 0) {
+  if (const auto png = plotPng(outDir, name, gp.str())) {
+    summary["plot"] = png->string();
+  } else {
     std::cerr << "sqdem contact: warning: gnuplot not found (scripts/setup.sh installs gnuplot-nox); "
                  "CSV and script written, PNG skipped\n";
-  } else {
-    if (gnuplot != 0) {
-      fs::remove(outDir / (name + ".png.tmp"));
-      throw std::runtime_error("gnuplot failed on " + (outDir / (name + ".gp")).string());
-    }
-    fs::rename(outDir / (name + ".png.tmp"), outDir / (name + ".png"));
-    summary["plot"] = (outDir / (name + ".png")).string();
   }
   std::cout << summary.dump(2) << "\n";
   int failures = 0;

@@ -112,11 +112,23 @@ void printSummary(const World& world, const RunReport& report, double wall, cons
   std::printf("final: solid fraction %.4f (bulk slab %.3g m), mean coordination %.3f (%.3f without rattlers), bed height %.4g m\n",
               m.solidFraction, m.slabHeight, m.meanCoordination, m.meanCoordinationNonRattlers, m.bedHeight);
   if (m.betweenWallsFraction > 0.0) std::printf("final: solid fraction between the walls %.4f\n", m.betweenWallsFraction);
+  std::printf("final: largest overlap %.3g of the smaller volume radius; %.1f %% of the contacts yielded\n",
+              m.largestOverlapRatio, 100.0 * m.yieldedFraction);
   std::printf("ParaView: open %s and %s\n", (output.directory / (output.name + "_particles.pvd")).string().c_str(),
               (output.directory / (output.name + "_contacts.pvd")).string().c_str());
   if (!report.finalParticles.empty()) {
     std::printf("final state: %s (a particle file: insert it into a scene with insert: [{file: ...}])\n",
                 report.finalParticles.string().c_str());
+  }
+  if (const auto& c = report.compression) {
+    std::printf("compression: peak plate pressure %.4g MPa; coating thickness before %.4g um (porosity %.4f), at the peak "
+                "%.4g um (%.4f), after %.4g um (%.4f)%s; springback %.2f %%, permanent compression %.2f %%\n",
+                c->peakPressure / 1e6, c->thicknessBefore * 1e6, c->porosityBefore, c->thicknessAtPeak * 1e6,
+                c->porosityAtPeak, c->thicknessAfter * 1e6, c->porosityAfter,
+                c->released ? "" : " (the plate never let go: the last gap)", 100.0 * c->springback(),
+                100.0 * c->permanentCompression());
+    std::printf("compression curve: %s%s\n", (output.directory / (output.name + "_compression.csv")).string().c_str(),
+                report.compressionPlot ? (", plot " + report.compressionPlot->string()).c_str() : " (no plot: gnuplot not found)");
   }
 }
 

@@ -73,6 +73,7 @@ template <NormalLawComponent Law>
   out.normalDamping = damping;
   out.normalStiffness = r.stiffness;
   out.area = r.area;
+  out.yielded = r.yielded;
   out.onB = Fn * n;
   const Vec3 vt = motion.relativeVelocity - motion.relativeVelocity.dot(n) * n;
   const MindlinSpring& tangential = model.tangential;

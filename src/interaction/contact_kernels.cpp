@@ -211,7 +211,7 @@ void runGroup(const std::vector<std::uint32_t>& members, const ContactModel& pai
     }
     s.acting[k] = force.acting;
     s.force[k] = force.onB;
-    s.load[k] = {force.normal, force.normalDamping, force.normalStiffness, force.area};
+    s.load[k] = {force.normal, force.normalDamping, force.normalStiffness, force.area, force.yielded};
     if (ledger) {
       ContactEnergy& e = s.energy[k];
       e = {};

@@ -6,7 +6,8 @@
 
 namespace sqdem {
 
-RunLog::RunLog(const std::filesystem::path& path, const World& world) : path_(path), out_(path, std::ios::trunc) {
+RunLog::RunLog(const std::filesystem::path& path, const World& world, std::optional<std::size_t> plate)
+    : path_(path), out_(path, std::ios::trunc), plate_(plate) {
   if (!out_) throw std::runtime_error("cannot write '" + path.string() + "'");
   out_.precision(12);
   out_ << "time,step,stage,kinetic_energy,contacts,mean_coordination,solid_fraction,bed_height,detector_failures"
@@ -18,6 +19,8 @@ RunLog::RunLog(const std::filesystem::path& path, const World& world) : path_(pa
     out_ << name << "_z" << name << "_fx" << name << "_fy" << name << "_fz";
     if (walls[w].shape == WallShape::Cylinder) out_ << name << "_tx" << name << "_ty" << name << "_tz";
   }
+  out_ << ",yielded_fraction,largest_overlap_ratio";
+  if (plate_) out_ << ",plate_gap,plate_pressure,porosity";
   if (world.energyLedger()) {
     out_ << ",work_bodies,work_gravity,elastic_energy,plastic_dissipation,damping_dissipation,tangential_dissipation"
             ",drag_dissipation,energy_residual";
@@ -36,6 +39,11 @@ void RunLog::row(const World& world, long step, const std::string& stage) {
     if (w.shape == WallShape::Cylinder) out_ << ',' << x.x() << ',' << x.y();
     out_ << ',' << x.z() << ',' << w.force.x() << ',' << w.force.y() << ',' << w.force.z();
     if (w.shape == WallShape::Cylinder) out_ << ',' << w.torque.x() << ',' << w.torque.y() << ',' << w.torque.z();
+  }
+  out_ << ',' << m.yieldedFraction << ',' << m.largestOverlapRatio;
+  if (plate_) {
+    const PlateMeasures plate = measurePlate(world, *plate_);
+    out_ << ',' << plate.gap << ',' << plate.pressure << ',' << plate.porosity;
   }
   if (const auto& e = world.energyLedger()) {
     out_ << ',' << e->bodies << ',' << e->gravity << ',' << e->stored << ',' << e->plastic() << ',' << e->damping << ','

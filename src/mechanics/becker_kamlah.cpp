@@ -142,6 +142,7 @@ NormalResponse BeckerKamlahLaw::force(const NormalContact& c, double overlap, Hi
   return {.force = s.force,
           .stiffness = 2.0 * c.effectiveModulus * c.factors.gamma * std::sqrt(c.radii.Rc) * std::sqrt(overlap),
           .area = pi * s.contactRadius * s.contactRadius,
+          .yielded = h.plastic.maxOverlap > law.yieldOverlap(),
           .regime = describe(s.regime)};
 }
 
@@ -164,6 +165,7 @@ NormalResponse BeckerKamlahLaw::adhesive(const BeckerKamlah& law, const NormalCo
           .stiffness = 2.0 * c.effectiveModulus * a,
           .area = pi * a * a,
           .pullOff = jkr.pullOffForce(),
+          .yielded = h.plastic.maxOverlap > law.yieldOverlap(),
           .regime = elastic >= 0.0 ? describe(s.regime) : "attached"};
 }
 

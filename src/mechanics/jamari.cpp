@@ -76,7 +76,7 @@ NormalResponse JamariLaw::force(const NormalContact& c, double overlap, History&
   const char* regime = !loading ? "unloading" : overlap <= law.yieldOverlap() ? "elastic"
                        : overlap < law.fullyPlasticOverlap() ? "elastic-plastic" : "fully plastic";
   return {.force = point.force, .stiffness = 2.0 * c.effectiveModulus * std::sqrt(point.area / pi), .area = point.area,
-          .regime = regime};
+          .yielded = h.maxOverlap > law.yieldOverlap(), .regime = regime};
 }
 
 }  // namespace sqdem

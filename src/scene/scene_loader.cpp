@@ -331,10 +331,12 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
     if (!std::regex_match(name, plain)) r.fail(m.first, "materials." + name, "names are letters, digits, '_', '.', '-'");
     scene.materials.push_back({name, readMaterial(r, m.second, "materials." + name)});
   }
+  // Shapes: optional when every particle comes with its own semi-axes (particle files, explicit
+  // particles); a name used elsewhere must be here.
   const YAML::Node shapes = root["shapes"];
-  if (!shapes || !shapes.IsMap() || shapes.size() == 0) r.fail(shapes ? shapes : root, "shapes", "missing (a mapping name -> shape)");
-  r.uniqueKeys(shapes, "shapes");
-  for (const auto& s : shapes) {
+  if (shapes && (!shapes.IsMap() || shapes.size() == 0)) r.fail(shapes, "shapes", "must be a mapping name -> shape");
+  if (shapes) r.uniqueKeys(shapes, "shapes");
+  for (const auto& s : shapes ? shapes : YAML::Node(YAML::NodeType::Map)) {
     const std::string name = s.first.as<std::string>();
     const YAML::Node file = s.second["file"];
     if (!file) {
@@ -595,7 +597,8 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
   }
 
   if (const YAML::Node out = root["output"]) {
-    r.allowOnly(out, "output", {"frames", "log_every", "contacts", "checkpoint_every_steps", "checkpoint_every_minutes", "energy"});
+    r.allowOnly(out, "output",
+                {"frames", "log_every", "contacts", "checkpoint_every_steps", "checkpoint_every_minutes", "energy", "compression"});
     scene.output.frames = static_cast<std::size_t>(r.integer(out, "frames", "output", 0.0, 1e5, 20.0));
     scene.output.logEvery = static_cast<std::size_t>(r.integer(out, "log_every", "output", 0.0, 1e12, 0.0));
     scene.output.contacts = r.flag(out, "contacts", "output", true);
@@ -603,6 +606,17 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
     scene.output.checkpointMinutes = r.number(out, "checkpoint_every_minutes", "output", scene.output.checkpointMinutes);
     if (!(scene.output.checkpointMinutes >= 0.0)) {
       r.fail(out["checkpoint_every_minutes"], "output.checkpoint_every_minutes", "must be >= 0 (wall-clock minutes, 0: off)");
+    }
+    if (const YAML::Node press = out["compression"]) {
+      r.allowOnly(press, "output.compression", {"wall"});
+      const std::size_t w = r.plane(press, "output.compression", scene.walls);
+      if (!(scene.walls[w].normal.z() < -0.999)) {
+        r.fail(press["wall"], "output.compression.wall", "the pressing plate must be a plane facing -z (normal [0, 0, -1])");
+      }
+      if (std::ranges::none_of(scene.walls, [](const WallSpec& s) { return s.shape == WallShape::Plane && s.normal.z() > 0.999; })) {
+        r.fail(press["wall"], "output.compression.wall", "needs a floor to press against: a plane wall facing +z");
+      }
+      scene.output.compressionWall = w;
     }
     scene.output.energy = r.flag(out, "energy", "output", false);
     for (std::size_t k = 0; scene.output.energy && k < scene.interactions.size(); ++k) {

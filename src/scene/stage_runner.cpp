@@ -6,8 +6,10 @@
 
 #include "sqdem/io/run_log.hpp"
 #include "sqdem/io/vtk_writer.hpp"
+#include "sqdem/scene/compression_report.hpp"
 #include "sqdem/scene/particle_file.hpp"
 #include "sqdem/scene/build_world.hpp"
+#include "sqdem/world/packing_measures.hpp"
 #include "sqdem/world/run_health.hpp"
 
 namespace sqdem {
@@ -75,13 +77,19 @@ RunReport runStages(const Scene& scene, World& world, const RunPlan& plan, const
                     const RunOutput& output, RunObserver& observer, const volatile std::sig_atomic_t& stop) {
   const bool fresh = start.totalSteps == 0 && start.stage == 0 && start.stepInStage == 0;
   VtkSeries vtk(output.directory, output.name, scene.output.contacts);
-  RunLog log(output.directory / (output.name + ".csv"), world);
+  RunLog log(output.directory / (output.name + ".csv"), world, scene.output.compressionWall);
+  std::optional<CompressionRecord> compression;
+  if (scene.output.compressionWall) compression.emplace();
+  const auto logRow = [&](long step, const std::string& stage) {
+    log.row(world, step, stage);
+    if (compression) compression->add(world.time(), measurePlate(world, *scene.output.compressionWall));
+  };
   RunReport report;
   report.log = log.path();
   report.latestCheckpoint = output.directory / (output.name + "_latest.checkpoint");
   if (fresh) world.computeForces();  // a checkpoint carries its forces; recomputing would advance the springs
   vtk.writeFrame(world);
-  if (fresh) log.row(world, 0, "initial");
+  if (fresh) logRow(0, "initial");
   RunHealth health(world);
 
   const double dt = world.timeStep();
@@ -112,11 +120,11 @@ RunReport runStages(const Scene& scene, World& world, const RunPlan& plan, const
       ++report.stepsThisRun;
       report.trouble = health.afterStep(world);
       if (!report.trouble.empty()) {
-        log.row(world, totalSteps, stage.name);
+        logRow(totalSteps, stage.name);
         report.outcome = RunOutcome::NumericalTrouble;
         return report;
       }
-      if (s % logEvery == 0) log.row(world, totalSteps, stage.name);
+      if (s % logEvery == 0) logRow(totalSteps, stage.name);
       if (frameEvery && s % frameEvery == 0) vtk.writeFrame(world);
       if (s % 10 == 0 && world.time() - stageStart >= stage.minimumDuration) {
         if (stage.kineticEnergyRatio > 0.0 && s % 100 == 0 &&
@@ -132,7 +140,7 @@ RunReport runStages(const Scene& scene, World& world, const RunPlan& plan, const
       }
       const RunProgress here{stageIndex, s, stageStart, totalSteps};
       if (stop) {
-        log.row(world, totalSteps, stage.name);
+        logRow(totalSteps, stage.name);
         writeRunCheckpoint(report.latestCheckpoint, scene, here, world);
         report.outcome = RunOutcome::Interrupted;
         return report;
@@ -146,13 +154,17 @@ RunReport runStages(const Scene& scene, World& world, const RunPlan& plan, const
       }
       observer.stepped(stage, s, steps, world);
     }
-    log.row(world, totalSteps, stage.name);
+    logRow(totalSteps, stage.name);
     observer.stageEnded(stage, reason, world);
     writeRunCheckpoint(output.directory / (output.name + "_after_" + stage.name + ".checkpoint"), scene,
                        RunProgress{stageIndex + 1, 0, world.time(), totalSteps}, world);
   }
   report.finalParticles = output.directory / (output.name + "_final_particles.csv");
   writeParticleFile(report.finalParticles, world, scene.materials);
+  if (compression) {
+    report.compression = compression->summary();
+    report.compressionPlot = compression->write(output.directory, output.name);
+  }
   return report;
 }
 

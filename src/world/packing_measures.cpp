@@ -27,6 +27,28 @@ std::vector<int> coordinationNumbers(const World& world) {
   return z;
 }
 
+const Wall* floorWall(const World& world) {
+  for (const Wall& w : world.walls()) {
+    if (w.shape == WallShape::Plane && w.plane.normal.z() > 0.999) return &w;
+  }
+  return nullptr;
+}
+
+double solidVolume(const World& world) {
+  double v = 0.0;
+  for (const std::uint32_t s : world.particles().shape) v += world.shapes()[s].volume();
+  return v;
+}
+
+PlateMeasures measurePlate(const World& world, std::size_t plate) {
+  const Wall* floor = floorWall(world);
+  PlateMeasures m;
+  m.gap = world.walls().at(plate).plane.point.z() - (floor ? floor->plane.point.z() : world.domain().lo.z());
+  m.pressure = world.wallPressure(plate);
+  m.porosity = 1.0 - solidVolume(world) / (world.wallArea(plate) * m.gap);
+  return m;
+}
+
 PackingMeasures measurePacking(const World& world) {
   const ParticleStore& p = world.particles();
   PackingMeasures m;
@@ -66,10 +88,17 @@ PackingMeasures measurePacking(const World& world) {
     m.stressVolume = base * (ceiling->plane.point.z() - floor->plane.point.z());
     m.betweenWallsFraction = volumeTotal / m.stressVolume;
   }
+  const auto radius = [&](std::uint32_t i) { return world.shapes()[p.shape[i]].volumeEquivalentRadius(); };
+  std::size_t yielded = 0;
   for (const ContactView c : world.contacts()) {
     const Vec3 branch = c.onWall() ? Vec3(c.point() - p.position[c.a()]) : Vec3(p.position[c.b()] + c.shift() - p.position[c.a()]);
     m.stress += branch * c.force().transpose();
+    yielded += c.normalLoad().yielded;
+    const double smaller = c.onWall() ? radius(c.a()) : std::min(radius(c.a()), radius(c.b()));
+    m.largestOverlapRatio = std::max(m.largestOverlapRatio, c.overlap() / smaller);
   }
+  const auto acting = static_cast<double>(world.contacts().size());
+  m.yieldedFraction = acting > 0.0 ? static_cast<double>(yielded) / acting : 0.0;
   // Symmetrised from a copy: assigning m.stress from an expression that reads its transpose
   // aliases in Eigen (each off-diagonal would read its already-overwritten twin).
   const Mat3 sum = m.stress;

@@ -43,6 +43,10 @@ refused "directory as scene" "is a directory, not a scene file" "$scratch"
 refused "energy ledger with a law that states no stored energy" \
   "'output.energy': the energy ledger needs every interaction's normal law to state its stored elastic energy .*interactions\[0\] uses haervig_jkr" \
   "$(variant ledger 's/  - materials: \[glass, glass\]/  - {materials: [glass, glass], normal: haervig_jkr, surface_energy: 0.01}/; s/^output: {frames: 4,/output: {energy: true, frames: 4,/')"
+refused "compression plate facing up" "'output.compression.wall': the pressing plate must be a plane facing -z" \
+  "$(variant plate_up 's/^output: {frames: 4,/output: {compression: {wall: 0}, frames: 4,/')"
+refused "compression without a floor" "'output.compression.wall': needs a floor to press against" \
+  "$(variant no_floor 's/^output: {frames: 4,/output: {compression: {wall: 1}, frames: 4,/; s/normal: \[0, 0, 1\], material/normal: [1, 0, 0], material/')"
 expect_error "--out twice" 2 "'--out' is given twice" "$sqdem" run "$base" --out "$out" --out "$out"
 
 # A domain in m with particles in um runs (the cell grid adapts) and says so.

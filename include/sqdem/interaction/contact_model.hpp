@@ -88,6 +88,7 @@ struct ContactForce {
   double normalDamping = 0.0;  ///< its viscous part (N): normal - normalDamping is the elastic force
   double normalStiffness = 0.0;  ///< S_n = dF/d(delta) of the elastic part (N/m), as the damping uses it
   double area = 0.0;        ///< contact area (m^2)
+  bool yielded = false;     ///< NormalResponse::yielded
   Vec3 momentOnB = Vec3::Zero();  ///< pure moment on B (N m), rolling resistance; A receives -momentOnB
   bool acting = true;  ///< false: the normal law does not act (NormalResponse::acting)
   bool valid = true;   ///< false: the law has no valid form at this contact (NormalResponse::valid)

@@ -33,6 +33,7 @@ struct NormalLoad {
   double damping = 0.0;    ///< its viscous part (N)
   double stiffness = 0.0;  ///< S_n of the elastic part (N/m)
   double area = 0.0;       ///< contact area (m^2)
+  bool yielded = false;    ///< NormalResponse::yielded: the contact carries a plastic dent
 };
 
 /// A contact's share of the energy ledger (world/energy_ledger.hpp), all in J: the elastic energy

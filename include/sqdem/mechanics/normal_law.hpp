@@ -43,6 +43,7 @@ struct NormalResponse {
   double pullOff = 0.0;    ///< F_C (N, >= 0) of an adhesive law: Coulomb limit mu |F_n + 2 F_C| (001 Eq. 17)
   bool acting = true;      ///< false: no contact (not yet formed, or detached): no force
   bool valid = true;       ///< false (with acting false): the law's parameters admit no contact here
+  bool yielded = false;    ///< loaded past its elastic limit at some time: the contact carries a dent
   const char* regime = "elastic";  ///< branch name, for the single-contact driver
 };
 

@@ -13,7 +13,8 @@
 // checkpoint `<name>_after_<stage>.checkpoint` after each stage and `<name>_latest.checkpoint`
 // every output.checkpoint_every_steps steps / checkpoint_every_minutes minutes and when `stop`
 // becomes non-zero (then it returns Interrupted after the current step). A completed run ends
-// with the particle file of its final state, `<name>_final_particles.csv` (particle_file.hpp). Numerical trouble
+// with the particle file of its final state, `<name>_final_particles.csv` (particle_file.hpp), and
+// a scene with a pressing plate with `<name>_compression.csv/.gp/.png` (compression_report.hpp). Numerical trouble
 // (run_health.hpp) ends it with NumericalTrouble after the log row is written. A run resumed
 // mid-stage continues bit for bit.
 
@@ -22,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "sqdem/scene/compression_report.hpp"
 #include "sqdem/scene/run_checkpoint.hpp"
 #include "sqdem/scene/scene.hpp"
 #include "sqdem/world/world.hpp"
@@ -63,6 +65,10 @@ struct RunReport {
   long totalSteps = 0, stepsThisRun = 0;
   std::filesystem::path log, latestCheckpoint;
   std::filesystem::path finalParticles;  ///< the particle file of the final state (Completed)
+  /// With a pressing plate (output.compression), Completed: what the press did (of this run's
+  /// rows: a resumed run's from its checkpoint on) and its plot, when gnuplot made one.
+  std::optional<CompressionSummary> compression;
+  std::optional<std::filesystem::path> compressionPlot;
 };
 
 RunReport runStages(const Scene& scene, World& world, const RunPlan& plan, const RunProgress& start,

@@ -15,7 +15,11 @@
 //                        particle pairs, l = x_c - x_a and f the force on the wall for wall
 //                        contacts; V = Lx Ly (wall gap, or H for a bed)
 //   mean coordination    2 N_pp / N over all particles (particle-particle contacts; walls and
-//                        rattlers included), and over particles with >= 2 contacts.
+//                        rattlers included), and over particles with >= 2 contacts;
+//   yielded fraction     of the force-carrying contacts (walls included), those whose law
+//                        says they carry a plastic dent (NormalResponse::yielded);
+//   largest overlap ratio  the largest overlap over the volume-equivalent radius of the
+//                        smaller body (a wall's contact: of its particle).
 
 #include "sqdem/geometry/pose.hpp"
 #include "sqdem/world/world.hpp"
@@ -31,10 +35,24 @@ struct PackingMeasures {
   double betweenWallsFraction = 0.0;   ///< 0 without a pair of opposed z walls
   Mat3 stress = Mat3::Zero();          ///< (Pa), compression positive
   double stressVolume = 0.0;           ///< V of the stress average (m^3)
+  double yieldedFraction = 0.0;
+  double largestOverlapRatio = 0.0;    ///< delta / R_vol (-)
 };
 
 
 PackingMeasures measurePacking(const World& world);
+
+/// A plate (a plane wall facing -z) pressing the bed onto the floor (the plane wall facing +z).
+struct PlateMeasures {
+  double gap = 0.0;       ///< plate z - floor z (m)
+  double pressure = 0.0;  ///< World::wallPressure (Pa)
+  double porosity = 0.0;  ///< 1 - V_solid / (A gap), A the plate's cross-section of the box
+};
+PlateMeasures measurePlate(const World& world, std::size_t plate);
+/// The floor: the first plane wall facing +z, if any.
+const Wall* floorWall(const World& world);
+/// The particles' volume (m^3).
+double solidVolume(const World& world);
 
 /// Volume of a body between the planes z = lo and z = hi (m^3). Ellipsoids exactly: the
 /// cross-section normal to z is an ellipse of area (3V / 4h) (1 - t^2/h^2), t = z - z_c, with
