@@ -277,6 +277,19 @@ TEST(Engine, ExplicitParticlesAndParticleFilesRoundTrip) {
   EXPECT_LT(turn, 1e-15);
   EXPECT_LT(spin, 1e-12);
 
+  // Tiling: the bed and its copy offset by the period along x fill a box twice as long; a scene
+  // whose particles all come from files needs no shapes.
+  const std::string entry = "  - {file: " + file.string() + ", allow_overlap: true}";
+  std::string tiled = replaced(replaced(restart, "hi: [6.0e-3, 6.0e-3, 12.0e-3]", "hi: [12.0e-3, 6.0e-3, 12.0e-3]"), entry,
+                               entry + "\n" + replaced(entry, "allow_overlap: true}", "allow_overlap: true, offset: [6.0e-3, 0, 0]}"));
+  tiled = replaced(tiled, "shapes:\n  grains: {volume_radius: [0.4e-3, 0.6e-3], aspect_b: [0.6, 1.2], aspect_c: [0.6, 1.2]}\n", "");
+  const World twice = buildWorld(loadScene(writeScene("tiled", tiled)));
+  ASSERT_EQ(twice.particles().size(), 2 * a.size());
+  for (std::size_t j = 0; j < b.size(); ++j) {
+    const std::size_t k = j + b.size();  // the copy's rows follow the bed's
+    EXPECT_EQ(twice.particles().position[k], twice.particles().position[j] + Vec3(6.0e-3, 0.0, 0.0));
+  }
+
   const std::string strict = replaced(restart, "allow_overlap: true", "allow_overlap: false");
   expectSceneError(strict, "overlaps");
   expectSceneError(replaced(listed, "material: glass, centre: [4.0e-3", "material: glass, centre: [1.5e-3"),

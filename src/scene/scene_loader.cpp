@@ -473,12 +473,13 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
     const std::string where = "insert[" + std::to_string(k) + "]";
     const YAML::Node in = insert[k];
     if (in.IsMap() && in["file"]) {
-      r.allowOnly(in, where, {"file", "allow_overlap"});
+      r.allowOnly(in, where, {"file", "allow_overlap", "offset"});
       const std::filesystem::path file = std::filesystem::path(path).parent_path() / r.text(in, "file", where);
       if (!std::filesystem::is_regular_file(file)) {
         r.fail(in["file"], where + ".file", "cannot open '" + file.string() + "' (paths are relative to the scene file)");
       }
       const bool allowOverlap = r.flag(in, "allow_overlap", where, false);
+      const Vec3 offset = in["offset"] ? r.vector(in, "offset", where) : Vec3::Zero();  // e.g. tiling a periodic bed
       std::vector<ParticleSpec> particles;
       try {
         particles = readParticleFile(file, scene.materials);
@@ -487,6 +488,7 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
       }
       for (ParticleSpec& p : particles) {
         p.allowOverlap = allowOverlap;
+        p.centre += offset;
         scene.particles.push_back(std::move(p));
       }
       continue;
