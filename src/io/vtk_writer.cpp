@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "sqdem/io/atomic_file.hpp"
+#include "sqdem/io/wall_surfaces.hpp"
 #include "sqdem/world/packing_measures.hpp"
 
 namespace sqdem {
@@ -75,6 +76,7 @@ void VtkSeries::writeFrame(const World& world) {
   writeFileAtomically(directory_ / particleFile, out.str());
   particleFrames_.emplace_back(world.time(), particleFile);
   writeCollection("particles", particleFrames_);
+  if (!world.walls().empty()) writeWalls(world);
   if (!contacts_) return;
 
   std::vector<ContactView> pairs;
@@ -102,6 +104,32 @@ void VtkSeries::writeFrame(const World& world) {
   writeFileAtomically(directory_ / contactFile, net.str());
   contactFrames_.emplace_back(world.time(), contactFile);
   writeCollection("contacts", contactFrames_);
+}
+
+void VtkSeries::writeWalls(const World& world) {
+  const WallSurfaces s = wallSurfaces(world.walls(), world.domain());
+  const std::size_t n = s.points.size(), m = s.polygons.size();
+  std::vector<std::uint32_t> connectivity, offsets;
+  for (const auto& polygon : s.polygons) {
+    connectivity.insert(connectivity.end(), polygon.begin(), polygon.end());
+    offsets.push_back(static_cast<std::uint32_t>(connectivity.size()));
+  }
+  std::ostringstream out;
+  out.precision(9);
+  out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+      << "  <PolyData>\n    <Piece NumberOfPoints=\"" << n << "\" NumberOfPolys=\"" << m << "\">\n      <Points>\n";
+  dataArray(out, "Float64", "position", 3, n, [&](auto& o, std::size_t k) { put(o, s.points[k]); });
+  out << "      </Points>\n      <Polys>\n";
+  dataArray(out, "Int64", "connectivity", 1, connectivity.size(), [&](auto& o, std::size_t k) { o << connectivity[k]; });
+  dataArray(out, "Int64", "offsets", 1, m, [&](auto& o, std::size_t k) { o << offsets[k]; });
+  out << "      </Polys>\n      <CellData Scalars=\"wall\">\n";
+  dataArray(out, "Int32", "wall", 1, m, [&](auto& o, std::size_t k) { o << s.wall[k]; });
+  dataArray(out, "Float64", "force", 3, m, [&](auto& o, std::size_t k) { put(o, world.walls()[s.wall[k]].force); });
+  out << "      </CellData>\n    </Piece>\n  </PolyData>\n</VTKFile>\n";
+  const std::string file = frameName(name_, "walls", wallFrames_.size(), ".vtp");
+  writeFileAtomically(directory_ / file, out.str());
+  wallFrames_.emplace_back(world.time(), file);
+  writeCollection("walls", wallFrames_);
 }
 
 void VtkSeries::writeCollection(const std::string& kind, const std::vector<std::pair<double, std::string>>& entries) const {

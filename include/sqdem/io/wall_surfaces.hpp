@@ -1,0 +1,23 @@
+#pragma once
+// The walls as surfaces for the ParaView output (vtk_writer.hpp): each plane clipped to the
+// domain box (a convex polygon, the plane's cross-section of the box), each cylinder a tube of
+// `segments` quads spanning the box's extent along its axis. The engine's walls are infinite;
+// these are what of them lies in the box.
+
+#include <cstdint>
+#include <vector>
+
+#include "sqdem/dynamics/wall.hpp"
+#include "sqdem/world/domain.hpp"
+
+namespace sqdem {
+
+struct WallSurfaces {
+  std::vector<Vec3> points;                            ///< (m)
+  std::vector<std::vector<std::uint32_t>> polygons;    ///< point indices, counter-clockwise seen from the particles' side
+  std::vector<std::uint32_t> wall;                     ///< the wall of each polygon
+};
+
+WallSurfaces wallSurfaces(const std::vector<Wall>& walls, const Domain& box, int segments = 48);
+
+}  // namespace sqdem
