@@ -54,7 +54,7 @@ std::uint64_t sceneFingerprint(const Scene& scene) {
     h.all(h.n(in.count), in.solidFraction, h.n(in.shape), h.n(in.material), in.lo, in.hi, h.n(in.randomOrientation));
   }
   for (const StageSpec& st : scene.stages) {
-    h.all(st.name, st.duration, st.kineticEnergyRatio, st.wallPressure, h.n(st.pressureWall), st.minimumDuration, st.velocityScale,
+    h.all(st.name, st.duration, st.kineticEnergyRatio, st.wallPressure, st.porosity, h.n(st.pressureWall), st.minimumDuration, st.velocityScale,
           st.viscousDamping, h.n(st.wall.value_or(~std::size_t{0})), st.wallVelocity,
           h.n(st.servoWall.value_or(~std::size_t{0})), st.servo.pressure, st.servo.maxSpeed);
     for (const auto& [t, x] : st.wallPath.points) h.all(t, x);

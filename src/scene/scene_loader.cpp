@@ -100,6 +100,18 @@ class Reader {
     }
     return w;
   }
+  /// The required key "wall": a plate pressing the bed onto the floor (porosities between them):
+  /// a plane facing -z, in a scene with a plane facing +z.
+  std::size_t plate(const YAML::Node& map, const std::string& where, const std::vector<WallSpec>& walls) const {
+    const std::size_t w = plane(map, where, walls);
+    if (!(walls[w].normal.z() < -0.999)) {
+      fail(map["wall"], keyPath(where, "wall"), "the pressing plate must be a plane facing -z (normal [0, 0, -1])");
+    }
+    if (std::ranges::none_of(walls, [](const WallSpec& s) { return s.shape == WallShape::Plane && s.normal.z() > 0.999; })) {
+      fail(map["wall"], keyPath(where, "wall"), "needs a floor to press against: a plane wall facing +z");
+    }
+    return w;
+  }
   Vec3 vector(const YAML::Node& map, const std::string& key, const std::string& where) const {
     const YAML::Node v = map[key];
     if (!v) fail(map, keyPath(where, key), "missing ([x, y, z] required)");
@@ -545,9 +557,9 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
     spec.viscousDamping = r.number(st, "viscous_damping", where, 0.0);
     if (spec.viscousDamping < 0.0) r.fail(st["viscous_damping"], where + ".viscous_damping", "must be >= 0 (1/s)");
     if (const YAML::Node stop = st["stop"]) {
-      r.allowOnly(stop, where + ".stop", {"kinetic_energy_ratio", "velocity_scale", "wall_pressure", "wall", "after"});
-      if (!stop["kinetic_energy_ratio"] && !stop["wall_pressure"]) {
-        r.fail(stop, where + ".stop", "needs kinetic_energy_ratio and/or wall_pressure (with wall)");
+      r.allowOnly(stop, where + ".stop", {"kinetic_energy_ratio", "velocity_scale", "wall_pressure", "porosity", "wall", "after"});
+      if (!stop["kinetic_energy_ratio"] && !stop["wall_pressure"] && !stop["porosity"]) {
+        r.fail(stop, where + ".stop", "needs kinetic_energy_ratio, wall_pressure or porosity (the last two with wall)");
       }
       if (stop["kinetic_energy_ratio"]) {
         spec.kineticEnergyRatio = r.positive(stop, "kinetic_energy_ratio", where + ".stop", "-");
@@ -563,6 +575,11 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
       if (stop["wall_pressure"]) {
         spec.wallPressure = r.positive(stop, "wall_pressure", where + ".stop", "Pa");
         spec.pressureWall = r.plane(stop, where + ".stop", scene.walls);
+      }
+      if (stop["porosity"]) {
+        spec.porosity = r.number(stop, "porosity", where + ".stop");
+        if (!(spec.porosity > 0.0 && spec.porosity < 1.0)) r.fail(stop["porosity"], where + ".stop.porosity", "must be in (0, 1)");
+        spec.pressureWall = r.plate(stop, where + ".stop", scene.walls);
       }
       spec.minimumDuration = r.number(stop, "after", where + ".stop", 0.0);
     }
@@ -611,14 +628,7 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
     }
     if (const YAML::Node press = out["compression"]) {
       r.allowOnly(press, "output.compression", {"wall"});
-      const std::size_t w = r.plane(press, "output.compression", scene.walls);
-      if (!(scene.walls[w].normal.z() < -0.999)) {
-        r.fail(press["wall"], "output.compression.wall", "the pressing plate must be a plane facing -z (normal [0, 0, -1])");
-      }
-      if (std::ranges::none_of(scene.walls, [](const WallSpec& s) { return s.shape == WallShape::Plane && s.normal.z() > 0.999; })) {
-        r.fail(press["wall"], "output.compression.wall", "needs a floor to press against: a plane wall facing +z");
-      }
-      scene.output.compressionWall = w;
+      scene.output.compressionWall = r.plate(press, "output.compression", scene.walls);
     }
     scene.output.energy = r.flag(out, "energy", "output", false);
     for (std::size_t k = 0; scene.output.energy && k < scene.interactions.size(); ++k) {

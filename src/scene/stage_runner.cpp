@@ -35,6 +35,13 @@ long stageSteps(const Scene& scene, std::size_t k, double dt) {
   return static_cast<long>(steps);
 }
 
+/// "wall W <what> <measured><unit> (target <target><unit>)".
+std::string measuredStop(const char* what, double measured, double target, std::size_t wall, const char* unit) {
+  char text[160];
+  std::snprintf(text, sizeof text, "wall %zu %s %.6g%s (target %.6g%s)", wall, what, measured, unit, target, unit);
+  return text;
+}
+
 }  // namespace
 
 RunPlan planRun(const Scene& scene, const World& world) {
@@ -130,8 +137,14 @@ RunReport runStages(const Scene& scene, World& world, const RunPlan& plan, const
         if (stage.kineticEnergyRatio > 0.0 && s % 100 == 0 &&
             kineticEnergyRatio(world, scene.gravity, stage.velocityScale) < stage.kineticEnergyRatio) {
           reason = "kinetic energy ratio below " + std::to_string(stage.kineticEnergyRatio);
-        } else if (stage.wallPressure > 0.0 && world.wallPressure(stage.pressureWall) >= stage.wallPressure) {
-          reason = "wall " + std::to_string(stage.pressureWall) + " pressure reached " + std::to_string(stage.wallPressure) + " Pa";
+        } else {
+          const double p = stage.wallPressure > 0.0 ? world.wallPressure(stage.pressureWall) : 0.0;
+          const double phi = stage.porosity > 0.0 ? measurePlate(world, stage.pressureWall).porosity : 1.0;
+          if (stage.wallPressure > 0.0 && p >= stage.wallPressure) {
+            reason = measuredStop("pressure reached", p, stage.wallPressure, stage.pressureWall, " Pa");
+          } else if (phi <= stage.porosity) {
+            reason = measuredStop("pressed the bed to porosity", phi, stage.porosity, stage.pressureWall, "");
+          }
         }
         if (reason != "duration reached") {
           if (!frameEvery || s % frameEvery != 0) vtk.writeFrame(world);

@@ -21,4 +21,17 @@ expect_error "kinetic_energy_ratio without gravity or velocity_scale" 1 \
 sed 's/stop: {kinetic_energy_ratio: 1.0e-3}/stop: {kinetic_energy_ratio: 1.0e-3, velocity_scale: 0.1}/' "$scratch/nograv.yaml" > "$scratch/vscale.yaml"
 "$sqdem" run "$scratch/vscale.yaml" --out "$scratch/vs" > "$scratch/vs.log" 2>&1
 check "velocity_scale stops the resting bed at once" grep -q "stage 'pour': t = .*kinetic energy ratio below" "$scratch/vs.log"
+# A porosity stop: the lid's press ends when the bed's porosity between floor and lid (1 -
+# particle volume / (box cross-section x gap)) reaches 0.875 (0.89 where the lid starts); the CSV's porosity column (with
+# output.compression) is above it before the last row and at or below it there.
+sed 's/duration: 0.06/duration: 0.005/; s/    move_wall: {wall: 1, velocity: \[0, 0, -0.1\]}/    move_wall: {wall: 1, velocity: [0, 0, -0.1]}\n    stop: {porosity: 0.875, wall: 1}/; s/^output: {/output: {compression: {wall: 1}, /' \
+  "$base" > "$scratch/porosity.yaml"
+"$sqdem" run "$scratch/porosity.yaml" --out "$scratch/porosity" > "$scratch/porosity.log" 2>&1
+check "the press stopped at the porosity" grep -Eq "stage 'press': .*wall 1 pressed the bed to porosity 0\.87[0-9]* \(target 0\.875\)" "$scratch/porosity.log"
+check "the CSV's porosity crossed 0.875 in the last row" awk -F, '
+  NR == 1 { for (i = 1; i <= NF; ++i) c[$i] = i; next }
+  { before = last; last = $c["porosity"] }
+  END { printf "  porosity: %s then %s\n", before, last; exit !(before > 0.875 && last <= 0.875) }' "$scratch/porosity/porosity.csv"
+expect_error "porosity out of range" 1 "'stages\[1\].stop.porosity': must be in \(0, 1\)" \
+  "$sqdem" run "$(sed 's/porosity: 0.875/porosity: 1.5/' "$scratch/porosity.yaml" > "$scratch/p15.yaml"; echo "$scratch/p15.yaml")" --out "$scratch/p15"
 finish

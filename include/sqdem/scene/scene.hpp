@@ -106,6 +106,8 @@ struct StageSpec {
                                     ///< sum m |g| R_vol, or sum m v_s^2 / 2 with a velocity scale
   double velocityScale = 0.0;       ///< v_s (m/s) of that scale (0: use gravity)
   double wallPressure = 0.0;        ///< stop when wall `pressureWall` carries this pressure (Pa, 0: off)
+  double porosity = 0.0;            ///< stop when the plate `pressureWall` has pressed the bed to this
+                                    ///< porosity (PlateMeasures::porosity, 0: off)
   std::size_t pressureWall = 0;
   double minimumDuration = 0.0;     ///< the stop criteria are checked only after this (s)
   double viscousDamping = 0.0;      ///< background drag c (1/s), F = -c m v

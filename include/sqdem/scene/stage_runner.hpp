@@ -8,7 +8,7 @@
 // runStages then runs the stages from a RunProgress (the start, or a checkpoint): per stage it
 // sets the walls' motion (each wall back to its declared velocity, then the stage's move_wall
 // velocity or path and servo_wall), the background drag, and
-// steps until the duration or a stop criterion (kinetic-energy ratio, wall pressure, checked
+// steps until the duration or a stop criterion (kinetic-energy ratio, wall pressure, porosity under a plate, checked
 // every 10 steps after `stop.after`); it writes VTK frames, CSV rows (io/run_log.hpp), the
 // checkpoint `<name>_after_<stage>.checkpoint` after each stage and `<name>_latest.checkpoint`
 // every output.checkpoint_every_steps steps / checkpoint_every_minutes minutes and when `stop`
