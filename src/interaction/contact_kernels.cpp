@@ -140,16 +140,16 @@ ContactModel asRun(ContactModel model, PairKind kind) {
   return model;
 }
 
-/// One group: detect, then (within the law's range) the law; the step's statistics. Called by every
-/// thread of the computation's parallel region: the contacts are shared out among them.
-template <PairKind Kind, NormalLawComponent Law>
-void runGroup(const std::vector<std::uint32_t>& members, const ContactModel& pairModel, const Law& law,
-              const InteractionScene& scene, const std::vector<double>& speedBound, ContactStore& s,
-              ContactStatistics& statistics) {
+/// One group: detect, then (within the law's range) the law; the step's statistics; with the
+/// Ledger, each contact's energy (ContactEnergy). Called by every thread of the computation's
+/// parallel region: the contacts are shared out among them.
+template <PairKind Kind, NormalLawComponent Law, bool Ledger>
+void groupKernel(const std::vector<std::uint32_t>& members, const ContactModel& pairModel, const Law& law,
+                 const InteractionScene& scene, const std::vector<double>& speedBound, ContactStore& s,
+                 ContactStatistics& statistics) {
   const ContactModel model = asRun(pairModel, Kind);
   const bool cached = cachesCurvatures(model, Kind);
   const double cosHalfAngle = std::cos(0.5 * model.curvatureTolerance);
-  const bool ledger = s.withEnergy;
   long long calls = 0, iterations = 0, failures = 0, deep = 0, lost = 0, invalid = 0;
   long long byStatus[contactStatusCount] = {};
   const auto count = static_cast<std::ptrdiff_t>(members.size());
@@ -157,8 +157,9 @@ void runGroup(const std::vector<std::uint32_t>& members, const ContactModel& pai
   for (std::ptrdiff_t m = 0; m < count; ++m) {
     const std::uint32_t k = members[m];
     if (m + prefetchDistance < count) s.prefetch(members[m + prefetchDistance]);
-    const detail::ContactLoad before = ledger ? detail::ContactLoad{s.normal[k], s.force[k], s.load[k]} : detail::ContactLoad{};
-    const Vec3 pointBefore = ledger ? s.point[k] : Vec3::Zero();
+    [[maybe_unused]] const detail::ContactLoad before = Ledger ? detail::ContactLoad{s.normal[k], s.force[k], s.load[k]}
+                                                               : detail::ContactLoad{};
+    [[maybe_unused]] const Vec3 pointBefore = Ledger ? s.point[k] : Vec3::Zero();
     // Round kinds solve a RoundContact (no body-frame points, no curvatures), the others a
     // ContactGeometry: both carry what the store keeps of the geometry.
     auto g = [&] {
@@ -183,7 +184,7 @@ void runGroup(const std::vector<std::uint32_t>& members, const ContactModel& pai
     // detached contact inside a plastic dent).
     const double range = normalRange(law, history.normal);
     ContactForce force{.acting = false};
-    double stored = 0.0;
+    [[maybe_unused]] double stored = 0.0;
     if (g.converged() && g.overlap > -range) {
       const ContactKinematics motion = kinematics<Kind>(scene, s, k, s.point[k]);
       const LawGeometry view = [&] {
@@ -196,8 +197,8 @@ void runGroup(const std::vector<std::uint32_t>& members, const ContactModel& pai
       }();
       force = detail::contactForce(model, law, view, motion, history, scene.dt);
       invalid += !force.valid;
-      if (ledger && force.acting) {
-        stored = storedEnergy(law, view.contact, g.overlap, history.normal, force.normal - force.normalDamping);
+      if constexpr (Ledger) {
+        if (force.acting) stored = storedEnergy(law, view.contact, g.overlap, history.normal, force.normal - force.normalDamping);
       }
     } else {
       lost += std::isinf(range);  // an adhesive contact its law still held
@@ -212,7 +213,7 @@ void runGroup(const std::vector<std::uint32_t>& members, const ContactModel& pai
     s.acting[k] = force.acting;
     s.force[k] = force.onB;
     s.load[k] = {force.normal, force.normalDamping, force.normalStiffness, force.area, force.yielded};
-    if (ledger) {
+    if constexpr (Ledger) {
       ContactEnergy& e = s.energy[k];
       e = {};
       if (before.force != Vec3::Zero() || force.acting) {  // a load before or after the step did work
@@ -243,6 +244,18 @@ void runGroup(const std::vector<std::uint32_t>& members, const ContactModel& pai
     statistics.lostAdhesions += lost;
     statistics.lawFailures += invalid;
   }
+}
+
+/// The group's kernel, with the ledger when the store keeps one (only laws that state their
+/// stored energy can: the scene loader refuses the others).
+template <PairKind Kind, NormalLawComponent Law>
+void runGroup(const std::vector<std::uint32_t>& members, const ContactModel& model, const Law& law,
+              const InteractionScene& scene, const std::vector<double>& speedBound, ContactStore& s,
+              ContactStatistics& statistics) {
+  if constexpr (StoredEnergyLaw<Law>) {
+    if (s.withEnergy) return groupKernel<Kind, Law, true>(members, model, law, scene, speedBound, s, statistics);
+  }
+  groupKernel<Kind, Law, false>(members, model, law, scene, speedBound, s, statistics);
 }
 
 template <NormalLawComponent Law>

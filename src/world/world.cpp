@@ -44,6 +44,9 @@ void World::setContactModel(std::uint32_t ma, std::uint32_t mb, const ContactMod
   const std::size_t n = materials_.size();
   double largest = 0.0;
   for (const Superquadric& s : shapes_) largest = std::max(largest, s.volumeEquivalentRadius());
+  if (ledger_ && !storesEnergy(model.normal)) {
+    throw std::invalid_argument("World: the energy ledger needs laws that state their stored energy (StoredEnergyLaw)");
+  }
   ContactModel m = model;
   m.reach = normalReach(m.normal, m.effectiveModulus, m.capFactor * largest);
   m.tangential.elliptic = m.tangential.elliptic && m.curvatures;  // the ellipse needs the curvatures
@@ -161,6 +164,11 @@ void World::step() {
 
 void World::enableEnergyLedger() {
   if (forcesCurrent_) throw std::logic_error("World: the energy ledger starts before the first force computation");
+  for (std::size_t k = 0; k < models_.size(); ++k) {
+    if (modelSet_[k] && !storesEnergy(models_[k].normal)) {
+      throw std::invalid_argument("World: the energy ledger needs laws that state their stored energy (StoredEnergyLaw)");
+    }
+  }
   ledger_.emplace();
   interactions_.fitStore(interactionScene());
 }

@@ -76,7 +76,9 @@ class World {
   void setViscousDamping(double c) { viscousDamping_ = c; }
   double viscousDamping() const { return viscousDamping_; }
   /// Keeps an energy ledger (energy_ledger.hpp) from the first force computation on; the
-  /// contacts then account their work (a cost per contact and step). Call before it.
+  /// contacts then account their work (a cost per contact and step). Call before it; every
+  /// contact model's law must state its stored energy (std::invalid_argument otherwise, here or
+  /// in setContactModel).
   void enableEnergyLedger();
   /// The ledger, when enabled.
   const std::optional<EnergyLedger>& energyLedger() const { return ledger_; }
