@@ -20,8 +20,9 @@ std::optional<CompressionSummary> CompressionRecord::summary() const {
   s.peakPressure = samples_[top].plate.pressure;
   if (!(s.peakPressure > 0.0)) return std::nullopt;
   const double bearing = threshold * s.peakPressure;
-  const auto first = std::ranges::find_if(samples_.begin(), samples_.begin() + top + 1, [&](const Sample& x) { return x.plate.pressure >= bearing; });
-  const auto after = std::find_if(samples_.begin() + top, samples_.end(), [&](const Sample& x) { return x.plate.pressure < bearing; });
+  const auto bears = [&](const Sample& x) { return x.plate.pressure >= bearing; };
+  const auto first = std::find_if(samples_.begin(), samples_.begin() + top + 1, bears);
+  const auto after = std::find_if_not(samples_.begin() + top, samples_.end(), bears);
   s.released = after != samples_.end();
   const PlateMeasures& last = s.released ? (after - 1)->plate : samples_.back().plate;
   s.thicknessBefore = first->plate.gap;
@@ -46,6 +47,7 @@ std::optional<std::filesystem::path> CompressionRecord::write(const std::filesys
         << '\n';
   }
   writeFileAtomically(directory / (data + ".csv"), csv.str());
+  if (!summary()) return std::nullopt;  // the plate never bore on the bed: nothing to plot
   std::ostringstream gp;
   gp << "# gnuplot script written by `sqdem run`; run: gnuplot " << data << ".gp\n"
      << gnuplotPreamble(data, 1200, 500) << "set datafile separator ','\nset datafile columnheaders\nset grid\nset key top right\n"

@@ -43,9 +43,9 @@ class CompressionRecord {
   std::optional<CompressionSummary> summary() const;
 
   /// Writes <name>_compression.csv (time, gap, pressure, porosity, branch: loading up to the
-  /// peak, then unloading), and its plot <name>_compression.png (pressure against porosity on
-  /// both branches, thickness against time) through gnuplot when it is installed; returns the
-  /// PNG's path, or nothing.
+  /// peak, then unloading), and, when the plate bore on the bed, its plot
+  /// <name>_compression.png (pressure against porosity on both branches, thickness against
+  /// time) through gnuplot when it is installed; returns the PNG's path, or nothing.
   std::optional<std::filesystem::path> write(const std::filesystem::path& directory, const std::string& name) const;
 
  private:
