@@ -162,5 +162,55 @@ TEST(CylinderDetector, CutOff) {
   EXPECT_EQ(detectContact(A, Pose{Vec3(0.5, 0.0, 0.0), Quat::Identity()}, c).status, ContactStatus::Degenerate);
 }
 
+// A finite cylinder (rounded ends, halfLength 2 along y): beside the barrel it is the infinite
+// one bit for bit; beyond an end a sphere meets the end's hemisphere in closed form (the sphere
+// pair: overlap r + R - |x - c|, normal towards the end's centre c, the hemisphere's curvatures
+// 1/R); a body far beyond the end, which the infinite cylinder would hold, is separated.
+TEST(CylinderDetector, FiniteCylinderHasRoundedEnds) {
+  Cylinder c{Vec3(0.0, 1.0, 0.0), Vec3::UnitY(), 1.0};
+  const Cylinder infinite = c;
+  c.halfLength = 2.0;
+  const Superquadric ellipsoid(0.6, 0.4, 0.3, 2.0, 2.0);
+  const Pose beside{Vec3(1.1, 1.5, 0.5), Quat(0.9, 0.1, 0.3, -0.2).normalized()};
+  const ContactGeometry onBarrel = detectContact(ellipsoid, beside, c), reference = detectContact(ellipsoid, beside, infinite);
+  ASSERT_TRUE(onBarrel.converged());
+  EXPECT_EQ(onBarrel.overlap, reference.overlap);
+  EXPECT_EQ(onBarrel.normal, reference.normal);
+  EXPECT_EQ(onBarrel.pointB, reference.pointB);
+
+  const Superquadric ball = Superquadric::sphere(0.5);
+  const Vec3 x(0.3, 3.8, 0.9), end(0.0, 3.0, 0.0);  // beyond the end at y = 1 + 2
+  const ContactGeometry g = detectContact(ball, Pose{x, Quat::Identity()}, c);
+  ASSERT_TRUE(g.converged());
+  EXPECT_NEAR(g.overlap, 1.5 - (x - end).norm(), 1e-12);
+  EXPECT_LT((g.normal - (end - x).normalized()).norm(), 1e-10);
+  EXPECT_LT((g.pointB - (end + (x - end).normalized())).norm(), 1e-10);
+  EXPECT_EQ(g.localPointB, g.pointB);  // a wall keeps world-frame points
+  EXPECT_NEAR(g.curvatureB.k1, 1.0, 1e-9);
+  EXPECT_NEAR(g.curvatureB.k2, 1.0, 1e-9);
+  EXPECT_EQ(detectContact(ball, Pose{Vec3(1.2, 4.5, 0.0), Quat::Identity()}, infinite).status, ContactStatus::Converged);
+  EXPECT_EQ(detectContact(ball, Pose{Vec3(1.2, 4.5, 0.0), Quat::Identity()}, c).status, ContactStatus::Separated);
+}
+
+// The overlap of an ellipsoid sliding along the axis across the barrel's end is continuous: the
+// barrel's and the hemisphere's solutions agree where they meet.
+TEST(CylinderDetector, FiniteCylinderBarrelMeetsItsEnd) {
+  Cylinder c{Vec3::Zero(), Vec3::UnitY(), 1.0};
+  c.halfLength = 2.0;
+  const Superquadric A(0.6, 0.4, 0.3, 2.0, 2.0);
+  const Quat q = Quat(0.9, 0.1, 0.3, -0.2).normalized();
+  double previous = NAN, largestJump = 0.0, largest = 0.0;
+  for (int k = 0; k <= 400; ++k) {
+    const double y = 1.5 + 1.0 * k / 400.0;  // the centre from 0.5 inside to 0.5 beyond the end
+    const ContactGeometry g = detectContact(A, Pose{Vec3(1.2, y, 0.3), q}, c);
+    ASSERT_TRUE(g.converged()) << "y = " << y;
+    if (k > 0) largestJump = std::max(largestJump, std::abs(g.overlap - previous));
+    largest = std::max(largest, g.overlap);
+    previous = g.overlap;
+  }
+  std::printf("across the end: largest overlap %.4f, largest change between neighbours %.2e\n", largest, largestJump);
+  EXPECT_LT(largestJump, 2e-3);  // 1/400 of the travel: a smooth change, no jump at the switch
+}
+
 }  // namespace
 }  // namespace sqdem

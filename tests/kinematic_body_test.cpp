@@ -97,6 +97,23 @@ TEST(KinematicBody, SpinningRollerDragsAlongItsSurfaceMotion) {
 
 // In a box periodic along x, a roller standing across the boundary acts through its image: the
 // same force and torque as the roller placed at that image in an open box.
+// A finite roller (rounded ends, barrel 4 mm long): with the particle under its barrel it acts as
+// the infinite one, bit for bit; moved along its axis until the particle lies beyond its end, it
+// does not touch it (the infinite one still would).
+TEST(KinematicBody, FiniteRollerActsOnlyWhereItIs) {
+  const Superquadric shape = Superquadric::ellipsoid(1.5e-3, 1e-3, 0.8e-3);
+  World infinite = rollerOverParticle(shape, 0.4, 300.0), under = rollerOverParticle(shape, 0.4, 300.0),
+        beyond = rollerOverParticle(shape, 0.4, 300.0);
+  under.walls()[1].cylinder.halfLength = 2e-3;
+  beyond.walls()[1].cylinder.halfLength = 2e-3;
+  beyond.walls()[1].cylinder.point.y() += 2e-3 + rollerRadius + 2e-3;  // the end's hemisphere 2 mm short of the particle's axis station
+  for (int step = 0; step < 200; ++step) infinite.step(), under.step(), beyond.step();
+  EXPECT_EQ(under.walls()[1].force, infinite.walls()[1].force);
+  EXPECT_EQ(under.particles().velocity[0], infinite.particles().velocity[0]);
+  EXPECT_GT(infinite.walls()[1].force.norm(), 0.0);
+  EXPECT_EQ(beyond.walls()[1].force, Vec3::Zero());
+}
+
 TEST(KinematicBody, RollerActsAcrossAPeriodicBoundary) {
   const double length = 20e-3;
   const auto pressed = [&](bool periodic) {

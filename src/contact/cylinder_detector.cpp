@@ -1,4 +1,4 @@
-// Particle against the outside of an infinite cylinder (detector.hpp).
+// Particle against the outside of a cylinder (detector.hpp): infinite, or finite with rounded ends.
 //
 // Only normals n perpendicular to the axis u separate a convex body from an infinite cylinder,
 // so the signed distance along the common normal is the one-dimensional maximum over the
@@ -11,12 +11,16 @@
 // half-width pi/2 about the direction from A's centre to the axis (warm: 0.2 rad about the last
 // normal), where the support function of A's shadow seen from the axis has its one minimum as
 // long as the axis lies outside A, then polished to round-off as the root of f'.
+// A finite cylinder (rounded ends) is solved as the infinite one; when the contact falls beyond
+// the barrel, the nearer end's hemisphere takes it: A against the sphere of the cylinder's radius
+// centred at the end of the axis segment (the pair detector).
 
 #include <boost/math/tools/minima.hpp>
 #include <boost/math/tools/toms748_solve.hpp>
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numbers>
 
 #include "sqdem/contact/detector.hpp"
@@ -94,9 +98,8 @@ Polished polish(const Shadow& s, double theta, int& evaluations) {
   return {n, first + lambda * (last - first)};
 }
 
-}  // namespace
-
-ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const Cylinder& roller,
+/// A against the infinite cylinder `roller`.
+ContactGeometry barrelContact(const Superquadric& A, const Pose& poseA, const Cylinder& roller,
                               const DetectorSettings& settings, const WarmStart* previous) {
   const Vec3& u = roller.axis;
   const Vec3 d = -roller.fromAxis(poseA.position);
@@ -156,6 +159,24 @@ ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const Cy
   g.curvatureB = roller.curvatures(-n);
   if (settings.curvatures && g.converged()) addCurvatures(g, A, poseA);
   return g;
+}
+
+}  // namespace
+
+ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const Cylinder& roller,
+                              const DetectorSettings& settings, const WarmStart* previous) {
+  if (!roller.finite()) return barrelContact(A, poseA, roller, settings, previous);
+  Cylinder barrel = roller;
+  barrel.halfLength = std::numeric_limits<double>::infinity();
+  ContactGeometry g = barrelContact(A, poseA, barrel, settings, previous);
+  if (g.status == ContactStatus::Separated) return g;  // from the infinite cylinder: from the finite one too
+  const double along = (g.converged() ? g.pointB : poseA.position).dot(roller.axis) - roller.point.dot(roller.axis);
+  if (std::abs(along) <= roller.halfLength) return g;  // on the barrel
+  const Vec3 end = roller.point + std::copysign(roller.halfLength, along) * roller.axis;
+  ContactGeometry cap = detectContact(A, poseA, Superquadric::sphere(roller.radius), Pose{end, Quat::Identity()}, settings);
+  cap.localPointB = cap.pointB;  // kinematic bodies keep world-frame points
+  cap.iterations += g.iterations;
+  return cap;
 }
 
 }  // namespace sqdem

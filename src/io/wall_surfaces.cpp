@@ -55,6 +55,7 @@ void addCylinder(WallSurfaces& s, const Cylinder& c, std::uint32_t w, const Doma
     const double t = c.axis.dot(corner(box, k) - c.point);
     lo = std::min(lo, t), hi = std::max(hi, t);
   }
+  lo = std::max(lo, -c.halfLength), hi = std::min(hi, c.halfLength);  // a finite barrel (its rounded ends are not drawn)
   const Vec3 u = normalTo(c.axis), v = c.axis.cross(u);
   const auto first = static_cast<std::uint32_t>(s.points.size());
   for (int k = 0; k < segments; ++k) {

@@ -43,7 +43,8 @@ std::uint64_t sceneFingerprint(const Scene& scene) {
     for (const auto& [key, value] : i.lawParameters) h.all(key, value);
   }
   for (const WallSpec& w : scene.walls) {
-    h.all(h.n(static_cast<std::uint32_t>(w.shape)), w.point, w.normal, w.axis, w.radius, w.spin, w.velocity, h.n(w.material));
+    h.all(h.n(static_cast<std::uint32_t>(w.shape)), w.point, w.normal, w.axis, w.radius, w.length, w.spin, w.velocity,
+          h.n(w.material));
   }
   for (const ParticleSpec& p : scene.particles) {
     const Quat& q = p.orientation;

@@ -445,7 +445,7 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
     if (!walls.IsSequence()) r.fail(walls, "walls", "must be a list");
     for (std::size_t k = 0; k < walls.size(); ++k) {
       const std::string where = "walls[" + std::to_string(k) + "]";
-      r.allowOnly(walls[k], where, {"point", "normal", "axis", "radius", "spin", "velocity", "material"});
+      r.allowOnly(walls[k], where, {"point", "normal", "axis", "radius", "length", "spin", "velocity", "material"});
       WallSpec w;
       w.point = r.vector(walls[k], "point", where);
       // A plane has a normal; a cylinder an axis, a radius and optionally a spin.
@@ -457,7 +457,7 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
       if (!(unit.norm() > 0.0)) r.fail(walls[k][direction], where + "." + direction, "must be non-zero");
       if (walls[k]["normal"]) {
         w.normal = unit.normalized();
-        for (const char* key : {"radius", "spin"}) {
+        for (const char* key : {"radius", "length", "spin"}) {
           if (walls[k][key]) r.fail(walls[k][key], where + "." + key, "belongs to a cylinder (axis), not a plane (normal)");
         }
       } else {
@@ -465,6 +465,7 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
         w.axis = unit.normalized();
         w.radius = r.positive(walls[k], "radius", where, "m");
         w.spin = r.number(walls[k], "spin", where, 0.0);
+        if (walls[k]["length"]) w.length = r.positive(walls[k], "length", where, "m");
       }
       if (walls[k]["velocity"]) w.velocity = r.vector(walls[k], "velocity", where);
       if (!walls[k]["material"]) r.fail(walls[k], where + ".material", "missing");

@@ -70,10 +70,12 @@ ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const Su
 ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const Plane& wall,
                               const DetectorSettings& settings = {});
 
-/// Particle A against the outside of an infinite cylinder (body B, a roller): the normal is
+/// Particle A against the outside of a cylinder (body B, a roller): the normal is
 /// perpendicular to the axis, found as the separating direction of largest signed distance
 /// (cylinder_detector.cpp); closed form for a sphere. Warm: searched near the previous normal.
-/// B's curvatures are 1/radius around the axis and 0 along it; B's point is in world frame.
+/// B's curvatures are 1/radius around the axis and 0 along it; B's point is in world frame. A
+/// finite cylinder's rounded end is the sphere of its radius at the end of the axis segment
+/// (the pair detector; cold).
 ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const Cylinder& roller,
                               const DetectorSettings& settings = {}, const WarmStart* previous = nullptr);
 

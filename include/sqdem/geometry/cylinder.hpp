@@ -1,6 +1,11 @@
 #pragma once
-// Infinite circular cylinder (a roller, or a roll section of a calender): the particles live
-// outside it. Its surface curvatures are 1/radius around the axis and 0 along it.
+// Circular cylinder (a roller, or a roll section of a calender): the particles live outside it.
+// Infinite along its axis, or finite with rounded ends: the points within `radius` of the axis
+// segment [point - halfLength axis, point + halfLength axis] (a capsule). Its surface curvatures
+// are 1/radius around the axis and 0 along it on the barrel, 1/radius both ways on an end.
+
+#include <algorithm>
+#include <limits>
 
 #include "sqdem/geometry/curvature.hpp"
 #include "sqdem/math/types.hpp"
@@ -8,21 +13,23 @@
 namespace sqdem {
 
 struct Cylinder {
-  Vec3 point = Vec3::Zero();   ///< any point of the axis (m)
+  Vec3 point = Vec3::Zero();   ///< a point of the axis (m): the middle of a finite one
   Vec3 axis = Vec3::UnitY();   ///< unit direction of the axis
   double radius = 1.0;         ///< (m), > 0
+  double halfLength = std::numeric_limits<double>::infinity();  ///< of the barrel (m)
 
-  /// The vector from the axis to x, normal to the axis (m).
-  Vec3 fromAxis(const Vec3& x) const {
-    const Vec3 r = x - point;
-    return r - r.dot(axis) * axis;
-  }
+  bool finite() const { return halfLength < std::numeric_limits<double>::infinity(); }
+  /// The station of x along the axis, clamped to the barrel (m).
+  double station(const Vec3& x) const { return std::clamp((x - point).dot(axis), -halfLength, halfLength); }
+  /// The vector to x from the nearest point of the axis segment (m): normal to the axis beside
+  /// the barrel.
+  Vec3 fromAxis(const Vec3& x) const { return x - point - station(x) * axis; }
   /// Signed distance of x from the surface, > 0 outside (m).
   double distance(const Vec3& x) const { return fromAxis(x).norm() - radius; }
   /// The unit normal from the axis to x (x off the axis).
   Vec3 outwardNormal(const Vec3& x) const { return fromAxis(x).normalized(); }
-  /// The principal curvatures where the outward normal is m (normal to the axis): 1/radius
-  /// around the axis (d1 = axis x m), 0 along it (d2 = axis); d1 x d2 = m.
+  /// The barrel's principal curvatures where the outward normal is m (normal to the axis):
+  /// 1/radius around the axis (d1 = axis x m), 0 along it (d2 = axis); d1 x d2 = m.
   PrincipalCurvatures curvatures(const Vec3& m) const { return {1.0 / radius, 0.0, axis.cross(m), axis}; }
 };
 

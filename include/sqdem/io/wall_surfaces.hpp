@@ -1,7 +1,8 @@
 #pragma once
 // The walls as surfaces for the ParaView output (vtk_writer.hpp): each plane clipped to the
 // domain box (a convex polygon, the plane's cross-section of the box), each cylinder a tube of
-// `segments` quads spanning the box's extent along its axis. The engine's walls are infinite;
+// `segments` quads spanning the box's extent along its axis (a finite one's barrel within it;
+// its rounded ends are not drawn). The engine's walls are infinite;
 // these are what of them lies in the box.
 
 #include <cstdint>

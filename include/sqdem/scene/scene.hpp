@@ -60,6 +60,7 @@ struct WallSpec {
   Vec3 point = Vec3::Zero(), normal = Vec3::UnitZ(), velocity = Vec3::Zero();
   Vec3 axis = Vec3::UnitY();  ///< unit (cylinder)
   double radius = 0.0;        ///< (m, cylinder)
+  double length = 0.0;        ///< of a finite cylinder's barrel between its rounded ends (m; 0: infinite)
   double spin = 0.0;          ///< angular velocity about the axis (rad/s, cylinder)
   std::uint32_t material = 0;
 
@@ -71,6 +72,7 @@ struct WallSpec {
     w.material = material;
     w.shape = shape;
     w.cylinder = Cylinder{point, axis, radius};
+    if (length > 0.0) w.cylinder.halfLength = 0.5 * length;
     w.spin = spin;
     return w;
   }
