@@ -28,7 +28,7 @@ RunLog::RunLog(const std::filesystem::path& path, const World& world, std::optio
   out_ << std::endl;
 }
 
-void RunLog::row(const World& world, long step, const std::string& stage) {
+std::optional<PlateMeasures> RunLog::row(const World& world, long step, const std::string& stage) {
   const PackingMeasures m = measurePacking(world);
   out_ << world.time() << ',' << step << ',' << stage << ',' << world.kineticEnergy() << ',' << world.contacts().size()
        << ',' << m.meanCoordination << ',' << m.solidFraction << ',' << m.bedHeight << ','
@@ -41,15 +41,17 @@ void RunLog::row(const World& world, long step, const std::string& stage) {
     if (w.shape == WallShape::Cylinder) out_ << ',' << w.torque.x() << ',' << w.torque.y() << ',' << w.torque.z();
   }
   out_ << ',' << m.yieldedFraction << ',' << m.largestOverlapRatio;
+  std::optional<PlateMeasures> plate;
   if (plate_) {
-    const PlateMeasures plate = measurePlate(world, *plate_);
-    out_ << ',' << plate.gap << ',' << plate.pressure << ',' << plate.porosity;
+    plate = measurePlate(world, *plate_);
+    out_ << ',' << plate->gap << ',' << plate->pressure << ',' << plate->porosity;
   }
   if (const auto& e = world.energyLedger()) {
     out_ << ',' << e->bodies << ',' << e->gravity << ',' << e->stored << ',' << e->plastic() << ',' << e->damping << ','
          << e->tangential << ',' << e->drag << ',' << e->residual(world.kineticEnergy());
   }
   out_ << std::endl;
+  return plate;
 }
 
 }  // namespace sqdem

@@ -88,8 +88,8 @@ RunReport runStages(const Scene& scene, World& world, const RunPlan& plan, const
   std::optional<CompressionRecord> compression;
   if (scene.output.compressionWall) compression.emplace();
   const auto logRow = [&](long step, const std::string& stage) {
-    log.row(world, step, stage);
-    if (compression) compression->add(world.time(), measurePlate(world, *scene.output.compressionWall));
+    const std::optional<PlateMeasures> plate = log.row(world, step, stage);
+    if (compression) compression->add(world.time(), *plate);
   };
   RunReport report;
   report.log = log.path();

@@ -17,6 +17,13 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
 
+/// The energy ledger tells stored from dissipated work only for laws that state their stored energy.
+void requireStoredEnergy(const NormalLaw& law) {
+  if (!storesEnergy(law)) {
+    throw std::invalid_argument("World: the energy ledger needs laws that state their stored energy (StoredEnergyLaw)");
+  }
+}
+
 }  // namespace
 
 World::World(std::vector<Superquadric> shapes, std::vector<Material> materials, const Domain& domain, double skin,
@@ -44,9 +51,7 @@ void World::setContactModel(std::uint32_t ma, std::uint32_t mb, const ContactMod
   const std::size_t n = materials_.size();
   double largest = 0.0;
   for (const Superquadric& s : shapes_) largest = std::max(largest, s.volumeEquivalentRadius());
-  if (ledger_ && !storesEnergy(model.normal)) {
-    throw std::invalid_argument("World: the energy ledger needs laws that state their stored energy (StoredEnergyLaw)");
-  }
+  if (ledger_) requireStoredEnergy(model.normal);
   ContactModel m = model;
   m.reach = normalReach(m.normal, m.effectiveModulus, m.capFactor * largest);
   m.tangential.elliptic = m.tangential.elliptic && m.curvatures;  // the ellipse needs the curvatures
@@ -165,9 +170,7 @@ void World::step() {
 void World::enableEnergyLedger() {
   if (forcesCurrent_) throw std::logic_error("World: the energy ledger starts before the first force computation");
   for (std::size_t k = 0; k < models_.size(); ++k) {
-    if (modelSet_[k] && !storesEnergy(models_[k].normal)) {
-      throw std::invalid_argument("World: the energy ledger needs laws that state their stored energy (StoredEnergyLaw)");
-    }
+    if (modelSet_[k]) requireStoredEnergy(models_[k].normal);
   }
   ledger_.emplace();
   interactions_.fitStore(interactionScene());

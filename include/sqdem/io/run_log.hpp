@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "sqdem/world/packing_measures.hpp"
 #include "sqdem/world/world.hpp"
 
 namespace sqdem {
@@ -26,7 +27,8 @@ class RunLog {
   /// Creates (truncates) the file and writes the header for the world's walls, the plate (wall
   /// index) and the ledger; throws std::runtime_error if it cannot.
   RunLog(const std::filesystem::path& path, const World& world, std::optional<std::size_t> plate);
-  void row(const World& world, long step, const std::string& stage);
+  /// Writes a row; returns the plate's measures it logged (with a plate).
+  std::optional<PlateMeasures> row(const World& world, long step, const std::string& stage);
   const std::filesystem::path& path() const { return path_; }
 
  private:
