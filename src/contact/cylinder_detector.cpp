@@ -10,7 +10,8 @@
 // -n, are a common-normal pair: overlap = -f. f is maximised by Brent's method on an interval of
 // half-width pi/2 about the direction from A's centre to the axis (warm: 0.2 rad about the last
 // normal), where the support function of A's shadow seen from the axis has its one minimum as
-// long as the axis lies outside A, then polished to round-off as the root of f'.
+// long as the axis lies outside A, then polished to round-off as the root of f'. Radius 0 is a
+// straight line: a mesh edge (line_contact.hpp).
 // A finite cylinder (rounded ends) is solved as the infinite one; when the contact falls beyond
 // the barrel, the nearer end's hemisphere takes it: A against the sphere of the cylinder's radius
 // centred at the end of the axis segment (the pair detector).
@@ -23,6 +24,7 @@
 #include <limits>
 #include <numbers>
 
+#include "line_contact.hpp"
 #include "sqdem/contact/detector.hpp"
 
 namespace sqdem {
@@ -98,9 +100,10 @@ Polished polish(const Shadow& s, double theta, int& evaluations) {
   return {n, first + lambda * (last - first)};
 }
 
-/// A against the infinite cylinder `roller`.
-ContactGeometry barrelContact(const Superquadric& A, const Pose& poseA, const Cylinder& roller,
-                              const DetectorSettings& settings, const WarmStart* previous) {
+}  // namespace
+
+ContactGeometry lineContact(const Superquadric& A, const Pose& poseA, const Cylinder& roller,
+                            const DetectorSettings& settings, const WarmStart* previous) {
   const Vec3& u = roller.axis;
   const Vec3 d = -roller.fromAxis(poseA.position);
   const double distance = d.norm();
@@ -156,8 +159,17 @@ ContactGeometry barrelContact(const Superquadric& A, const Pose& poseA, const Cy
   g.pointB = g.pointA + gap * n;
   g.localPointA = R.transpose() * s;
   g.localPointB = g.pointB;  // kinematic bodies keep world-frame points
-  g.curvatureB = roller.curvatures(-n);
   if (settings.curvatures && g.converged()) addCurvatures(g, A, poseA);
+  return g;
+}
+
+namespace {
+
+/// A against the infinite cylinder `roller`: the line contact with the barrel's curvatures.
+ContactGeometry barrelContact(const Superquadric& A, const Pose& poseA, const Cylinder& roller,
+                              const DetectorSettings& settings, const WarmStart* previous) {
+  ContactGeometry g = lineContact(A, poseA, roller, settings, previous);
+  if (g.converged() || g.status == ContactStatus::Degenerate) g.curvatureB = roller.curvatures(-g.normal);
   return g;
 }
 

@@ -21,13 +21,15 @@
 // penetration depth of the Minkowski difference) as overlap and its normal and support points.
 //
 // Closed forms: sphere-sphere and sphere-plane (round_contact.hpp), and every
-// superquadric-plane pair (support map). Particle-cylinder: a one-dimensional search.
+// superquadric-plane pair (support map). Particle-cylinder: a one-dimensional search. Particle-
+// mesh: per feature, the plane, line or point contact, kept in the feature's region.
 // Before any iteration, pairs further apart than the cut-off are culled by bounding spheres and
 // oriented boxes. The result is never NaN/inf: an unresolved pair is a status (contact_geometry.hpp).
 
 #include "sqdem/contact/contact_geometry.hpp"
 #include "sqdem/contact/round_contact.hpp"
 #include "sqdem/geometry/cylinder.hpp"
+#include "sqdem/geometry/mesh_features.hpp"
 #include "sqdem/geometry/plane.hpp"
 #include "sqdem/geometry/pose.hpp"
 #include "sqdem/geometry/superquadric.hpp"
@@ -78,6 +80,18 @@ ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const Pl
 /// (the pair detector; cold).
 ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const Cylinder& roller,
                               const DetectorSettings& settings = {}, const WarmStart* previous = nullptr);
+
+/// Particle A against a point (a mesh vertex): the common normal through the point, by Newton's
+/// method on A's surface (point_detector.cpp); B's curvatures flat (a kink has no finite ones).
+ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const Vec3& point,
+                              const DetectorSettings& settings = {}, const WarmStart* previous = nullptr);
+
+/// Particle A against feature `feature` of a triangle mesh whose body frame is translated by
+/// origin (mesh_detector.cpp): Separated when that feature does not answer for the touch (the
+/// touch belongs to a neighbouring feature, or there is none). localPointB in the mesh's frame.
+ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const MeshFeatures& mesh, const Vec3& origin,
+                              std::uint32_t feature, const DetectorSettings& settings = {},
+                              const WarmStart* previous = nullptr);
 
 /// Sets the principal curvatures of a solution found without them (settings.curvatures false)
 /// at its surface points localPointA and localPointB (body frames).
