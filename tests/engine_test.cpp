@@ -413,7 +413,7 @@ TEST(Engine, SceneErrorsNameLineKeyAndWhatIsAllowed) {
                    "'stages[0].move_wall': needs exactly one of velocity");
   const std::string roller = "  - {point: [0, 0, 0], normal: [0, 0, 1], material: glass}\n";
   expectSceneError(replaced(bedScene, roller, roller + "  - {point: [0, 0, 0.02], normal: [0, 0, -1], axis: [0, 1, 0], material: glass}\n"),
-                   "'walls[1]': needs exactly one of normal [nx, ny, nz] (a plane) or axis [ux, uy, uz] with radius (m) (a cylinder)");
+                   "'walls[1]': needs exactly one of normal [nx, ny, nz] (a plane), axis [ux, uy, uz] with radius (m) (a cylinder) or mesh: file.stl (a triangle mesh)");
   expectSceneError(replaced(bedScene, roller, roller + "  - {point: [0, 0, 0.02], axis: [0, 1, 0], material: glass}\n"),
                    "'walls[1].radius': missing");
   expectSceneError(replaced(bedScene, roller, roller + "  - {point: [0, 0, 0.02], axis: [0, 1, 0], radius: -1, material: glass}\n"),

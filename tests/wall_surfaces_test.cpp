@@ -35,7 +35,7 @@ TEST(WallSurfaces, PlanesAreTheirCrossSectionsOfTheBox) {
   walls[0].plane = Plane{Vec3::Zero(), Vec3::UnitZ()};
   walls[1].plane = Plane{Vec3(0.0, 0.0, 1.5), -Vec3::UnitZ()};
   walls[2].plane = Plane{Vec3(0.5, 1.0, 1.5), Vec3(1.0, 0.0, 1.0).normalized()};
-  const WallSurfaces s = wallSurfaces(walls, unitBox());
+  const WallSurfaces s = wallSurfaces(walls, {}, unitBox());
   ASSERT_EQ(s.polygons.size(), 3u);
   for (std::size_t k = 0; k < 3; ++k) {
     EXPECT_EQ(s.wall[k], k);
@@ -54,7 +54,7 @@ TEST(WallSurfaces, CylinderIsATubeAcrossTheBox) {
   std::vector<Wall> walls(1);
   walls[0].shape = WallShape::Cylinder;
   walls[0].cylinder = Cylinder{Vec3(0.5, 0.7, 2.0), Vec3::UnitY(), 0.25};
-  const WallSurfaces s = wallSurfaces(walls, unitBox(), 48);
+  const WallSurfaces s = wallSurfaces(walls, {}, unitBox(), 48);
   ASSERT_EQ(s.polygons.size(), 48u);
   double area = 0.0, lo = 1e9, hi = -1e9;
   for (const Vec3& x : s.points) {

@@ -48,12 +48,16 @@ ContactGeometry detect(const InteractionScene& scene, const std::vector<double>&
   // Gaps within the skin are solved too (rough and adhesive contacts act across them, and every
   // candidate is warm-started next step).
   const DetectorSettings settings{.cutoff = scene.skin, .tolerance = scene.detector.tolerance, .curvatures = curvatures};
+  const WarmStart warm{s.localA[k], s.localB[k], s.overlap[k]};
+  const bool touched = s.status[k] == ContactStatus::Converged && scene.detector.warmStart;
   if constexpr (Kind == PairKind::ParticleCylinder) {
-    const WarmStart warm{s.localA[k], s.localB[k], s.overlap[k]};
-    const bool touched = s.status[k] == ContactStatus::Converged && scene.detector.warmStart;
     Cylinder image = scene.walls[b & ~wallFlag].cylinder;  // the image nearest A (a periodic box)
     image.point += s.shift[k];
     return detectContact(A, poseOf(p, a), image, settings, touched ? &warm : nullptr);
+  } else if constexpr (Kind == PairKind::ParticleMesh) {
+    const Wall& wall = scene.walls[b & ~wallFlag];
+    return detectContact(A, poseOf(p, a), scene.meshes[wall.mesh], wall.origin, s.feature[k], settings,
+                         touched ? &warm : nullptr);
   } else if constexpr (withWall(Kind)) {
     return detectContact(A, poseOf(p, a), scene.walls[b & ~wallFlag].plane, settings);
   } else {
@@ -271,6 +275,8 @@ void runGroup(PairKind kind, const std::vector<std::uint32_t>& members, const Co
     case PairKind::ParticleWall: return runGroup<PairKind::ParticleWall>(members, model, law, scene, speedBound, s, statistics);
     case PairKind::ParticleCylinder:
       return runGroup<PairKind::ParticleCylinder>(members, model, law, scene, speedBound, s, statistics);
+    case PairKind::ParticleMesh:
+      return runGroup<PairKind::ParticleMesh>(members, model, law, scene, speedBound, s, statistics);
   }
 }
 

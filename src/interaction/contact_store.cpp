@@ -31,7 +31,7 @@ void ContactStore::reserve(std::size_t n) {
   });
 }
 
-void ContactStore::add(std::uint32_t bodyA, std::uint32_t bodyB, const Vec3& bShift) {
+void ContactStore::add(std::uint32_t bodyA, std::uint32_t bodyB, const Vec3& bShift, std::uint32_t bFeature) {
   const std::size_t k = size();
   forEachArray(*this, [&](auto& array) {
     if (keeps(&array)) array.push_back(fresh<Element<decltype(array)>>());
@@ -39,6 +39,7 @@ void ContactStore::add(std::uint32_t bodyA, std::uint32_t bodyB, const Vec3& bSh
   a[k] = bodyA;
   b[k] = bodyB;
   shift[k] = bShift;
+  feature[k] = bFeature;
   normal[k] = Vec3::UnitZ();
 }
 

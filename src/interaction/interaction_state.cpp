@@ -50,6 +50,11 @@ Interactions Interactions::readState(CheckpointReader& in, const InteractionScen
             "contact index");
     requireIntact(static_cast<unsigned>(s.status[k]) <= static_cast<unsigned>(ContactStatus::Degenerate), "contact status");
     requireIntact(k == 0 || s.key(k - 1) < s.key(k), "contact order");
+    const Wall* wall = s.onWall(k) ? &scene.walls[s.b[k] & ~wallFlag] : nullptr;
+    const bool onMesh = wall != nullptr && wall->shape == WallShape::Mesh;
+    requireIntact(onMesh ? wall->mesh < scene.meshes.size() && s.feature[k] < scene.meshes[wall->mesh].featureCount()
+                         : s.feature[k] == 0,
+                  "mesh feature");
   }
   for (std::size_t k = 0; k < interacting.size(); ++k) {
     requireIntact(interacting[k] < count && (k == 0 || interacting[k - 1] < interacting[k]), "interacting contacts");

@@ -52,7 +52,7 @@ void Interactions::setCandidates(const std::vector<CandidateKey>& candidates, co
   if (candidates.size() >= bodyBFlag) throw std::length_error("Interactions: more than 2^31 candidate contacts");
   ContactStore next = emptyStore(scene);
   next.reserve(candidates.size());
-  for (const CandidateKey& c : candidates) next.add(c.a, c.b, c.shift);
+  for (const CandidateKey& c : candidates) next.add(c.a, c.b, c.shift, c.feature);
   // Carry the state of pairs that persist (both lists are sorted by key).
   std::size_t previous = 0;
   for (std::size_t k = 0; k < next.size(); ++k) {
@@ -73,7 +73,7 @@ void Interactions::fitStore(const InteractionScene& scene) {
   }
   ContactStore fitted = wanted;
   for (std::size_t k = 0; k < store_.size(); ++k) {
-    fitted.add(store_.a[k], store_.b[k], store_.shift[k]);
+    fitted.add(store_.a[k], store_.b[k], store_.shift[k], store_.feature[k]);
     fitted.carryOver(k, store_, k);
   }
   store_ = std::move(fitted);

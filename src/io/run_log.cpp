@@ -15,9 +15,9 @@ RunLog::RunLog(const std::filesystem::path& path, const World& world, std::optio
   const std::vector<Wall>& walls = world.walls();
   for (std::size_t w = 0; w < walls.size(); ++w) {
     const std::string name = ",wall" + std::to_string(w);
-    if (walls[w].shape == WallShape::Cylinder) out_ << name << "_x" << name << "_y";
+    if (walls[w].shape != WallShape::Plane) out_ << name << "_x" << name << "_y";
     out_ << name << "_z" << name << "_fx" << name << "_fy" << name << "_fz";
-    if (walls[w].shape == WallShape::Cylinder) out_ << name << "_tx" << name << "_ty" << name << "_tz";
+    if (walls[w].shape != WallShape::Plane) out_ << name << "_tx" << name << "_ty" << name << "_tz";
   }
   out_ << ",yielded_fraction,largest_overlap_ratio";
   if (plate_) out_ << ",plate_gap,plate_pressure,porosity";
@@ -36,9 +36,9 @@ std::optional<PlateMeasures> RunLog::row(const World& world, long step, const st
   for (const auto& [i, j] : {std::pair{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}}) out_ << ',' << m.stress(i, j);
   for (const Wall& w : world.walls()) {
     const Vec3& x = w.reference();
-    if (w.shape == WallShape::Cylinder) out_ << ',' << x.x() << ',' << x.y();
+    if (w.shape != WallShape::Plane) out_ << ',' << x.x() << ',' << x.y();
     out_ << ',' << x.z() << ',' << w.force.x() << ',' << w.force.y() << ',' << w.force.z();
-    if (w.shape == WallShape::Cylinder) out_ << ',' << w.torque.x() << ',' << w.torque.y() << ',' << w.torque.z();
+    if (w.shape != WallShape::Plane) out_ << ',' << w.torque.x() << ',' << w.torque.y() << ',' << w.torque.z();
   }
   out_ << ',' << m.yieldedFraction << ',' << m.largestOverlapRatio;
   std::optional<PlateMeasures> plate;

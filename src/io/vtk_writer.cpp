@@ -107,7 +107,7 @@ void VtkSeries::writeFrame(const World& world) {
 }
 
 void VtkSeries::writeWalls(const World& world) {
-  const WallSurfaces s = wallSurfaces(world.walls(), world.domain());
+  const WallSurfaces s = wallSurfaces(world.walls(), world.meshes(), world.domain());
   const std::size_t n = s.points.size(), m = s.polygons.size();
   std::vector<std::uint32_t> connectivity, offsets;
   for (const auto& polygon : s.polygons) {

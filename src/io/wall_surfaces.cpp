@@ -71,15 +71,27 @@ void addCylinder(WallSurfaces& s, const Cylinder& c, std::uint32_t w, const Doma
   }
 }
 
+
+/// The mesh's triangles where the wall has moved its origin.
+void addMesh(WallSurfaces& s, const TriangleMesh& mesh, const Vec3& origin, std::uint32_t w) {
+  const auto first = static_cast<std::uint32_t>(s.points.size());
+  for (const Vec3& v : mesh.vertices) s.points.push_back(origin + v);
+  for (const auto& [i, j, k] : mesh.triangles) {
+    s.polygons.push_back({first + i, first + j, first + k});
+    s.wall.push_back(w);
+  }
+}
+
 }  // namespace
 
-WallSurfaces wallSurfaces(const std::vector<Wall>& walls, const Domain& box, int segments) {
+WallSurfaces wallSurfaces(const std::vector<Wall>& walls, const std::vector<MeshFeatures>& meshes, const Domain& box,
+                          int segments) {
   WallSurfaces s;
   for (std::uint32_t w = 0; w < walls.size(); ++w) {
-    if (walls[w].shape == WallShape::Cylinder) {
-      addCylinder(s, walls[w].cylinder, w, box, segments);
-    } else {
-      addPlane(s, walls[w].plane, w, box);
+    switch (walls[w].shape) {
+      case WallShape::Plane: addPlane(s, walls[w].plane, w, box); break;
+      case WallShape::Cylinder: addCylinder(s, walls[w].cylinder, w, box, segments); break;
+      case WallShape::Mesh: addMesh(s, meshes[walls[w].mesh].mesh(), walls[w].origin, w); break;
     }
   }
   return s;

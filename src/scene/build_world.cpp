@@ -75,6 +75,17 @@ World buildWorld(const Scene& scene) {
     orientations.push_back(p.orientation);
     radii.push_back(shapes.back().boundingRadius());
   }
+  // Random insertions keep their bounding spheres clear of the walls (a mesh's: of its triangles).
+  std::vector<std::optional<MeshTree>> meshTrees;
+  for (const WallSpec& w : scene.walls) meshTrees.push_back(w.mesh ? std::optional(MeshTree(w.mesh->mesh())) : std::nullopt);
+  const auto clearOfWalls = [&](const Vec3& x, double r) {
+    for (std::size_t w = 0; w < scene.walls.size(); ++w) {
+      const bool clear = meshTrees[w] ? meshTrees[w]->trianglesNear(x - scene.walls[w].point, r).empty()
+                                      : scene.walls[w].wall().distance(x) > r;
+      if (!clear) return false;
+    }
+    return true;
+  };
   for (std::size_t k = 0; k < scene.insertions.size(); ++k) {
     const InsertionSpec& in = scene.insertions[k];
     std::uniform_real_distribution<double> ux(in.lo.x(), in.hi.x()), uy(in.lo.y(), in.hi.y()), uz(in.lo.z(), in.hi.z());
@@ -110,8 +121,7 @@ World buildWorld(const Scene& scene) {
       bool placed = false;
       for (int attempt = 0; attempt < 10000 && !placed; ++attempt) {
         const Vec3 x = scene.domain.wrap(Vec3(ux(rng), uy(rng), uz(rng)));
-        placed = std::all_of(scene.walls.begin(), scene.walls.end(),
-                             [&](const WallSpec& w) { return w.wall().distance(x) > r; });
+        placed = clearOfWalls(x, r);
         for (std::size_t j = 0; placed && j < centres.size(); ++j) {
           placed = scene.domain.minimumImage(x - centres[j]).norm() > r + radii[j];
         }
@@ -194,7 +204,11 @@ World buildWorld(const Scene& scene) {
                        " m, beyond the skin " + shortNumber(world.neighbourList().skin()) + " m: raise 'skin' to at least that");
     }
   }
-  for (const WallSpec& spec : scene.walls) world.addWall(spec.wall());
+  for (const WallSpec& spec : scene.walls) {
+    Wall w = spec.wall();
+    if (spec.mesh) w.mesh = world.addMesh(*spec.mesh);
+    world.addWall(w);
+  }
   for (std::size_t i = 0; i < shapes.size(); ++i) {
     world.addParticle(static_cast<std::uint32_t>(i), materialOf[i], centres[i], orientations[i]);
   }

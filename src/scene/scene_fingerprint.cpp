@@ -45,6 +45,9 @@ std::uint64_t sceneFingerprint(const Scene& scene) {
   for (const WallSpec& w : scene.walls) {
     h.all(h.n(static_cast<std::uint32_t>(w.shape)), w.point, w.normal, w.axis, w.radius, w.length, w.spin, w.velocity,
           h.n(w.material));
+    if (!w.mesh) continue;
+    for (const Vec3& v : w.mesh->mesh().vertices) h(v);  // the mesh as read, repaired and scaled
+    for (const auto& t : w.mesh->mesh().triangles) h.all(h.n(t[0]), h.n(t[1]), h.n(t[2]));
   }
   for (const ParticleSpec& p : scene.particles) {
     const Quat& q = p.orientation;

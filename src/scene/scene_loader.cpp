@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "sqdem/geometry/superquadric.hpp"
+#include "sqdem/io/stl_mesh.hpp"
 #include "sqdem/mechanics/law_input.hpp"
 #include "sqdem/scene/particle_file.hpp"
 #include "sqdem/scene/scene_loader.hpp"
@@ -96,7 +97,8 @@ class Reader {
   std::size_t plane(const YAML::Node& map, const std::string& where, const std::vector<WallSpec>& walls) const {
     const std::size_t w = wallIndex(map, where, walls.size());
     if (walls[w].shape != WallShape::Plane) {
-      fail(map["wall"], keyPath(where, "wall"), "walls[" + std::to_string(w) + "] is a cylinder; this needs a plane");
+      const char* shape = walls[w].shape == WallShape::Cylinder ? "a cylinder" : "a mesh";
+      fail(map["wall"], keyPath(where, "wall"), "walls[" + std::to_string(w) + "] is " + shape + "; this needs a plane");
     }
     return w;
   }
@@ -257,6 +259,23 @@ Material readMaterial(const Reader& r, const YAML::Node& m, const std::string& w
   out.yieldStrength = r.number(m, "yield_strength", where, 0.0);
   if (out.yieldStrength < 0.0) r.fail(m["yield_strength"], where + ".yield_strength", "must be > 0 (Pa)");
   return out;
+}
+
+/// A mesh wall's STL file (relative to the scene file), read, repaired (io/stl_mesh.hpp) and
+/// scaled to m, with its contact features.
+MeshFeatures readMeshWall(const Reader& r, const YAML::Node& wall, const std::string& where, const std::string& scenePath) {
+  const std::filesystem::path file = std::filesystem::path(scenePath).parent_path() / r.text(wall, "mesh", where);
+  if (!std::filesystem::is_regular_file(file)) {
+    r.fail(wall["mesh"], where + ".mesh", "cannot open '" + file.string() + "' (paths are relative to the scene file)");
+  }
+  const double scale = wall["scale"] ? r.positive(wall, "scale", where, "m per STL unit") : 1.0;
+  try {
+    return MeshFeatures(readStlMesh(file, scale).mesh);
+  } catch (const MeshError& e) {
+    r.fail(wall["mesh"], where + ".mesh", e.what());
+  } catch (const std::invalid_argument& e) {
+    r.fail(wall["mesh"], where + ".mesh", file.string() + ": " + e.what());
+  }
 }
 
 ShapeFamily readShape(const Reader& r, const YAML::Node& s, const std::string& name) {
@@ -445,17 +464,29 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
     if (!walls.IsSequence()) r.fail(walls, "walls", "must be a list");
     for (std::size_t k = 0; k < walls.size(); ++k) {
       const std::string where = "walls[" + std::to_string(k) + "]";
-      r.allowOnly(walls[k], where, {"point", "normal", "axis", "radius", "length", "spin", "velocity", "material"});
+      r.allowOnly(walls[k], where, {"point", "normal", "axis", "radius", "length", "spin", "mesh", "scale", "velocity", "material"});
       WallSpec w;
       w.point = r.vector(walls[k], "point", where);
-      // A plane has a normal; a cylinder an axis, a radius and optionally a spin.
-      if (walls[k]["normal"].IsDefined() == walls[k]["axis"].IsDefined()) {
-        r.fail(walls[k], where, "needs exactly one of normal [nx, ny, nz] (a plane) or axis [ux, uy, uz] with radius (m) (a cylinder)");
+      // A plane has a normal; a cylinder an axis, a radius and optionally a spin; a mesh a file.
+      if (int(walls[k]["normal"].IsDefined()) + int(walls[k]["axis"].IsDefined()) + int(walls[k]["mesh"].IsDefined()) != 1) {
+        r.fail(walls[k], where,
+               "needs exactly one of normal [nx, ny, nz] (a plane), axis [ux, uy, uz] with radius (m) (a cylinder) or "
+               "mesh: file.stl (a triangle mesh)");
+      }
+      if (walls[k]["mesh"]) {
+        w.shape = WallShape::Mesh;
+        w.mesh = std::make_shared<const MeshFeatures>(readMeshWall(r, walls[k], where, path));
+      } else if (walls[k]["scale"]) {
+        r.fail(walls[k]["scale"], where + ".scale", "belongs to a mesh wall (mesh: file.stl)");
       }
       const char* direction = walls[k]["normal"] ? "normal" : "axis";
-      const Vec3 unit = r.vector(walls[k], direction, where);
+      const Vec3 unit = w.mesh ? Vec3::UnitZ() : r.vector(walls[k], direction, where);
       if (!(unit.norm() > 0.0)) r.fail(walls[k][direction], where + "." + direction, "must be non-zero");
-      if (walls[k]["normal"]) {
+      if (w.mesh) {
+        for (const char* key : {"radius", "length", "spin"}) {
+          if (walls[k][key]) r.fail(walls[k][key], where + "." + key, "belongs to a cylinder (axis), not a mesh");
+        }
+      } else if (walls[k]["normal"]) {
         w.normal = unit.normalized();
         for (const char* key : {"radius", "length", "spin"}) {
           if (walls[k][key]) r.fail(walls[k][key], where + "." + key, "belongs to a cylinder (axis), not a plane (normal)");

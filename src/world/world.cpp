@@ -69,8 +69,10 @@ std::size_t World::addParticle(std::uint32_t shape, std::uint32_t material, cons
 }
 
 void World::buildCandidates() {
-  // Candidates in key order (a, then b with walls after particles): for each particle its pairs
-  // from the neighbour list (sorted by (a, b)), then the walls within reach.
+  // Candidates in key order (a, then b with walls after particles, then a mesh's features): for
+  // each particle its pairs from the neighbour list (sorted by (a, b)), then the walls within
+  // reach; of a mesh wall, the features of the triangles within reach (the tree's, in the
+  // mesh's body frame; meshes are not periodic).
   const ParticleStore& p = particles_;
   std::vector<CandidateKey> next;
   next.reserve(neighbours_.pairs().size() + interactions_.store().size());
@@ -83,14 +85,42 @@ void World::buildCandidates() {
       // A cylinder across a periodic direction acts through its image nearest the particle
       // (the contact's shift); planes are parallel to the periodic directions.
       const Wall& wall = walls_[w];
+      const double reach = boundingRadius_[i] + range + skin;
+      if (wall.shape == WallShape::Mesh) {
+        addMeshCandidates(i, w, reach, next);
+        continue;
+      }
       const Vec3 r = p.position[i] - wall.reference();
       const Vec3 shift = wall.shape == WallShape::Cylinder ? Vec3(r - domain_.minimumImage(r)) : Vec3::Zero();
-      if (wall.distance(p.position[i] - shift) < boundingRadius_[i] + range + skin) next.push_back({i, wallFlag | w, shift});
+      if (wall.distance(p.position[i] - shift) < reach) next.push_back({i, wallFlag | w, shift});
     }
   }
   interactions_.setCandidates(next, interactionScene());
   wallReference_.clear();
   for (const Wall& w : walls_) wallReference_.push_back(w.reference());
+}
+
+void World::addMeshCandidates(std::uint32_t i, std::uint32_t w, double reach, std::vector<CandidateKey>& next) const {
+  const Wall& wall = walls_[w];
+  const MeshFeatures& mesh = meshes_[wall.mesh];
+  std::vector<std::uint32_t> features;
+  for (std::uint32_t t : meshTrees_[wall.mesh].trianglesNear(particles_.position[i] - wall.origin, reach)) {
+    features.push_back(t);
+    for (int c = 0; c < 3; ++c) {
+      const std::uint32_t e = mesh.faceEdges(t)[c], v = mesh.mesh().triangles[t][c];
+      if (mesh.edge(e).feature) features.push_back(mesh.edgeFeature(e));
+      if (mesh.vertexIsFeature(v)) features.push_back(mesh.vertexFeature(v));
+    }
+  }
+  std::sort(features.begin(), features.end());
+  features.erase(std::unique(features.begin(), features.end()), features.end());
+  for (std::uint32_t f : features) next.push_back({i, wallFlag | w, Vec3::Zero(), f});
+}
+
+std::uint32_t World::addMesh(MeshFeatures mesh) {
+  meshTrees_.emplace_back(mesh.mesh());
+  meshes_.emplace_back(std::move(mesh));
+  return static_cast<std::uint32_t>(meshes_.size() - 1);
 }
 
 double World::largestRange() const {

@@ -62,10 +62,11 @@ void World::readState(CheckpointReader& in) {
   }
   for (const Wall& w : wallRecords) {
     requireIntact(w.material < materials_.size(), "wall material index");
-    requireIntact(w.shape == WallShape::Plane || w.shape == WallShape::Cylinder, "wall shape");
+    requireIntact(w.shape == WallShape::Plane || w.shape == WallShape::Cylinder || w.shape == WallShape::Mesh, "wall shape");
+    requireIntact(w.shape != WallShape::Mesh || w.mesh < meshes_.size(), "wall mesh index");
   }
   Interactions interactions = Interactions::readState(
-      in, {restored, shapes_, boundingRadius, wallRecords, models_, materials_.size(), neighbours_.skin(), dt_, detector_,
+      in, {restored, shapes_, boundingRadius, wallRecords, meshes_, models_, materials_.size(), neighbours_.skin(), dt_, detector_,
            ledger_.has_value()});
   in.getVector(reference, n);
   in.getVector(candidates, anyLength);

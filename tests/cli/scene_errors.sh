@@ -47,6 +47,21 @@ refused "compression plate facing up" "'output.compression.wall': the pressing p
   "$(variant plate_up 's/^output: {frames: 4,/output: {compression: {wall: 0}, frames: 4,/')"
 refused "compression without a floor" "'output.compression.wall': needs a floor to press against" \
   "$(variant no_floor 's/^output: {frames: 4,/output: {compression: {wall: 1}, frames: 4,/; s/normal: \[0, 0, 1\], material/normal: [1, 0, 0], material/')"
+# Mesh walls (issue 13): the STL file relative to the scene, its keys.
+printf 'solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid s\n' > "$scratch/tri.stl"
+echo "not an stl file" > "$scratch/garbage.stl"
+refused "mesh file missing" "'walls\[0\].mesh': cannot open '.*nothere.stl' \(paths are relative to the scene file\)" \
+  "$(variant mesh_missing 's/{point: \[0, 0, 0\], normal: \[0, 0, 1\], material: glass}/{point: [0, 0, 0], mesh: nothere.stl, material: glass}/')"
+refused "mesh file not STL" "'walls\[0\].mesh': .*garbage.stl" \
+  "$(variant mesh_garbage 's/{point: \[0, 0, 0\], normal: \[0, 0, 1\], material: glass}/{point: [0, 0, 0], mesh: garbage.stl, material: glass}/')"
+refused "mesh with a spin" "'walls\[0\].spin': belongs to a cylinder \(axis\), not a mesh" \
+  "$(variant mesh_spin 's/{point: \[0, 0, 0\], normal: \[0, 0, 1\], material: glass}/{point: [0, 0, 0], mesh: tri.stl, spin: 3, material: glass}/')"
+refused "mesh and normal" "'walls\[0\]': needs exactly one of normal .* or mesh: file.stl" \
+  "$(variant mesh_normal 's/{point: \[0, 0, 0\], normal: \[0, 0, 1\], material: glass}/{point: [0, 0, 0], normal: [0, 0, 1], mesh: tri.stl, material: glass}/')"
+refused "scale on a plane" "'walls\[0\].scale': belongs to a mesh wall" \
+  "$(variant plane_scale 's/{point: \[0, 0, 0\], normal: \[0, 0, 1\], material: glass}/{point: [0, 0, 0], normal: [0, 0, 1], scale: 0.001, material: glass}/')"
+refused "mesh scale 0" "'walls\[0\].scale': must be > 0" \
+  "$(variant mesh_scale 's/{point: \[0, 0, 0\], normal: \[0, 0, 1\], material: glass}/{point: [0, 0, 0], mesh: tri.stl, scale: 0, material: glass}/')"
 expect_error "--out twice" 2 "'--out' is given twice" "$sqdem" run "$base" --out "$out" --out "$out"
 
 # A domain in m with particles in um runs (the cell grid adapts) and says so.

@@ -1,7 +1,8 @@
 #pragma once
-// A wall: a kinematic body (DESIGN.md §2) whose surface is an infinite plane or the outside of
-// an infinite cylinder (a roller), moved with a prescribed velocity or, a plane, under servo
-// control; a cylinder may also spin about its axis. The particles' forces and torques on it
+// A wall: a kinematic body (DESIGN.md §2) whose surface is an infinite plane, the outside of a
+// cylinder (a roller) or a triangle mesh (an STL file: mesh_features.hpp, held by the World),
+// moved with a prescribed velocity or, a plane, under servo control; a cylinder may also spin
+// about its axis. The particles' forces and torques on it
 // are summed in the interaction layer's reduction.
 
 #include <cstdint>
@@ -31,6 +32,7 @@ struct WallServo {
 enum class WallShape : std::uint8_t {
   Plane,     ///< `plane`
   Cylinder,  ///< the outside of `cylinder`
+  Mesh,      ///< the World's mesh `mesh`, its body frame translated by `origin`
 };
 
 /// A wall moving with a prescribed velocity or under servo control; `force` and `torque` are
@@ -47,20 +49,26 @@ struct Wall {
   Cylinder cylinder;             ///< the surface of a Cylinder wall
   double spin = 0.0;             ///< a cylinder's angular velocity about its axis (rad/s, right-handed)
   Vec3 torque = Vec3::Zero();    ///< about its reference point (N m), from the last force computation
+  std::uint32_t mesh = 0;        ///< a Mesh wall's index among the World's meshes
+  Vec3 origin = Vec3::Zero();    ///< a Mesh wall's body-frame origin in the world (m)
 
-  /// The point its motion and torque refer to: the plane's point, or the cylinder's axis point.
-  const Vec3& reference() const { return shape == WallShape::Plane ? plane.point : cylinder.point; }
+  /// The point its motion and torque refer to: the plane's point, the cylinder's axis point, or
+  /// the mesh's origin.
+  const Vec3& reference() const {
+    return shape == WallShape::Plane ? plane.point : shape == WallShape::Cylinder ? cylinder.point : origin;
+  }
   /// Velocity of its surface at x (m/s): translation, and a cylinder's spin.
   Vec3 surfaceVelocity(const Vec3& x) const {
-    return shape == WallShape::Plane ? velocity : Vec3(velocity + spin * cylinder.axis.cross(x - cylinder.point));
+    return shape == WallShape::Cylinder ? Vec3(velocity + spin * cylinder.axis.cross(x - cylinder.point)) : velocity;
   }
-  /// Signed distance of x from its surface, > 0 on the particles' side (m).
+  /// Signed distance of x from a plane's or a cylinder's surface, > 0 on the particles' side (m).
   double distance(const Vec3& x) const {
     return shape == WallShape::Plane ? (x - plane.point).dot(plane.normal) : cylinder.distance(x);
   }
   void translate(const Vec3& displacement) {
     if (shape == WallShape::Plane) plane.point += displacement;
-    else cylinder.point += displacement;
+    else if (shape == WallShape::Cylinder) cylinder.point += displacement;
+    else origin += displacement;
   }
 };
 

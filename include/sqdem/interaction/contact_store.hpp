@@ -2,7 +2,8 @@
 // The contact store (DESIGN.md §2-3): every candidate pair of the current neighbour list, in key
 // order (a, then b, walls after particles), as a structure of arrays so that a kernel touches
 // only the fields it reads and writes:
-//   identity     a, b (b = particle slot, or wallFlag | wall index), b's periodic shift
+//   identity     a, b (b = particle slot, or wallFlag | wall index), b's periodic shift, the
+//                feature of a mesh wall b touches (mesh_features.hpp; 0 for other bodies)
 //   warm start   status, both surface points in their body frames, the separation bound
 //   geometry     normal, overlap, contact point (the reduction's lever arm)
 //   histories    tangential spring, the normal law's record, the rolling displacement
@@ -47,9 +48,17 @@ struct ContactEnergy {
   double tangential = 0.0;  ///< by the tangential force and the rolling moment: springs and sliding
 };
 
+/// A contact's place in key order: the pair (a, then b), then the mesh feature.
+struct ContactKey {
+  std::uint64_t pair = 0;
+  std::uint32_t feature = 0;
+  auto operator<=>(const ContactKey&) const = default;
+};
+
 struct ContactStore {
   std::vector<std::uint32_t> a, b;
   std::vector<Vec3> shift;  ///< periodic image offset of b (m)
+  std::vector<std::uint32_t> feature;  ///< of a mesh wall (0 otherwise)
 
   std::vector<ContactStatus> status;  ///< of the last solve
   std::vector<Vec3> localA, localB;   ///< surface points in A's and B's body frames (m)
@@ -77,7 +86,7 @@ struct ContactStore {
 
   std::size_t size() const { return a.size(); }
   bool onWall(std::size_t k) const { return (b[k] & wallFlag) != 0; }
-  std::uint64_t key(std::size_t k) const { return (std::uint64_t{a[k]} << 32) | b[k]; }
+  ContactKey key(std::size_t k) const { return {(std::uint64_t{a[k]} << 32) | b[k], feature[k]}; }
 
   /// The arrays a contact carries from one step to the next (warm start, geometry, histories):
   /// what candidate rebuilds carry over.
@@ -93,6 +102,7 @@ struct ContactStore {
     f(s.a);
     f(s.b);
     f(s.shift);
+    f(s.feature);
     std::apply([&](auto... member) { (f(s.*member), ...); }, stateArrays);
     f(s.acting);
     f(s.energy);
@@ -117,7 +127,7 @@ struct ContactStore {
       for (const char* line = first; line < last; line += 64) __builtin_prefetch(line);
       __builtin_prefetch(last);
     };
-    ahead(a), ahead(b), ahead(shift), ahead(status), ahead(localA), ahead(localB), ahead(separation);
+    ahead(a), ahead(b), ahead(shift), ahead(feature), ahead(status), ahead(localA), ahead(localB), ahead(separation);
     ahead(normal), ahead(overlap), ahead(point), ahead(spring), ahead(normalHistory);
     ahead(acting), ahead(force), ahead(load);
     if (withRolling) ahead(rolling), ahead(moment);
@@ -127,7 +137,7 @@ struct ContactStore {
   /// Room for n contacts in every kept array.
   void reserve(std::size_t n);
   /// Appends a fresh candidate (no geometry, no history).
-  void add(std::uint32_t bodyA, std::uint32_t bodyB, const Vec3& bShift);
+  void add(std::uint32_t bodyA, std::uint32_t bodyB, const Vec3& bShift, std::uint32_t bFeature = 0);
   /// Forgets contact k's geometry and history (it is solved cold next time).
   void reset(std::size_t k);
   /// Copies contact `from` of `other` (same layout) into contact k: every state array.
@@ -148,6 +158,7 @@ class ContactView {
   std::uint32_t b() const { return s_->b[k_]; }
   bool onWall() const { return s_->onWall(k_); }
   std::uint32_t wall() const { return s_->b[k_] & ~wallFlag; }
+  std::uint32_t feature() const { return s_->feature[k_]; }  ///< of a mesh wall
   const Vec3& shift() const { return s_->shift[k_]; }
   const Vec3& normal() const { return s_->normal[k_]; }
   double overlap() const { return s_->overlap[k_]; }

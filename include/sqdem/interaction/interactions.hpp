@@ -16,6 +16,7 @@
 #include "sqdem/contact/detector.hpp"
 #include "sqdem/dynamics/particle_store.hpp"
 #include "sqdem/dynamics/wall.hpp"
+#include "sqdem/geometry/mesh_features.hpp"
 #include "sqdem/geometry/superquadric.hpp"
 #include "sqdem/interaction/contact_model.hpp"
 #include "sqdem/interaction/contact_store.hpp"
@@ -60,6 +61,7 @@ struct InteractionScene {
   const std::vector<Superquadric>& shapes;
   const std::vector<double>& boundingRadius;  ///< per particle slot (m)
   const std::vector<Wall>& walls;
+  const std::vector<MeshFeatures>& meshes;  ///< of the mesh walls (Wall::mesh)
   /// Contact model of material pair (i, j) at models[i * materialCount + j] (symmetric).
   const std::vector<ContactModel>& models;
   std::size_t materialCount = 0;
@@ -69,11 +71,12 @@ struct InteractionScene {
   bool energy = false;  ///< the contacts account their energy (ContactEnergy)
 };
 
-/// A candidate pair for Interactions::setCandidates: b a particle slot or wallFlag | wall.
+/// A candidate pair for Interactions::setCandidates: b a particle slot or wallFlag | wall, and
+/// a mesh wall's feature.
 struct CandidateKey {
   std::uint32_t a = 0, b = 0;
   Vec3 shift = Vec3::Zero();
-  std::uint64_t key() const { return (std::uint64_t{a} << 32) | b; }
+  std::uint32_t feature = 0;
 };
 
 /// An empty store with the optional arrays the scene's contact models need.
@@ -81,7 +84,7 @@ ContactStore emptyStore(const InteractionScene& scene);
 
 class Interactions {
  public:
-  /// Replaces the candidates (sorted by key, unique), carrying over the geometry and histories
+  /// Replaces the candidates (sorted by ContactKey, unique), carrying over the geometry and histories
   /// of pairs that persist, and regroups them.
   void setCandidates(const std::vector<CandidateKey>& candidates, const InteractionScene& scene);
   /// Keeps the store's optional arrays (rolling, curvature cache) to what the scene's contact

@@ -17,6 +17,7 @@ enum class PairKind : std::uint8_t {
   SuperquadricPair,  ///< common-normal solve, general exponents
   ParticleWall,      ///< closed form through the support map
   ParticleCylinder,  ///< a one-dimensional search (closed form for a sphere); never round
+  ParticleMesh,      ///< one feature of a triangle mesh (plane, line or point contact)
 };
 
 /// Two spheres, or a sphere and a plane: both relative radii are R* = rA rB / (rA + rB) (r on a
@@ -26,7 +27,8 @@ enum class PairKind : std::uint8_t {
 constexpr bool round(PairKind kind) { return kind == PairKind::SphereSphere || kind == PairKind::SphereWall; }
 /// Body B is a wall.
 constexpr bool withWall(PairKind kind) {
-  return kind == PairKind::SphereWall || kind == PairKind::ParticleWall || kind == PairKind::ParticleCylinder;
+  return kind == PairKind::SphereWall || kind == PairKind::ParticleWall || kind == PairKind::ParticleCylinder ||
+         kind == PairKind::ParticleMesh;
 }
 
 inline PairKind pairKind(const Superquadric& A, const Superquadric& B) {
@@ -34,9 +36,12 @@ inline PairKind pairKind(const Superquadric& A, const Superquadric& B) {
   if (A.isEllipsoid() && B.isEllipsoid()) return PairKind::EllipsoidPair;
   return PairKind::SuperquadricPair;
 }
-/// A sphere on a cylinder is not round: the cylinder's curvature differs along and around its axis.
+/// A sphere on a cylinder is not round: the cylinder's curvature differs along and around its
+/// axis. A sphere on a mesh is not taken as round either (its edges and vertices are solved as
+/// lines and points, a face as a plane: one kernel for every feature).
 inline PairKind wallPairKind(const Superquadric& A, WallShape wall) {
   if (wall == WallShape::Cylinder) return PairKind::ParticleCylinder;
+  if (wall == WallShape::Mesh) return PairKind::ParticleMesh;
   return A.isSphere() ? PairKind::SphereWall : PairKind::ParticleWall;
 }
 

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -54,7 +55,8 @@ struct InteractionSpec {
   double rollingHysteresis = 0.0;  ///< dgamma/gamma of the rolling resistance (0: off, needs haervig_jkr)
 };
 
-/// A wall: a plane (point, normal) or a cylinder (point on the axis, axis, radius, spin).
+/// A wall: a plane (point, normal), a cylinder (point on the axis, axis, radius, spin) or a
+/// triangle mesh from an STL file (point: where the file's origin is placed).
 struct WallSpec {
   WallShape shape = WallShape::Plane;
   Vec3 point = Vec3::Zero(), normal = Vec3::UnitZ(), velocity = Vec3::Zero();
@@ -63,6 +65,7 @@ struct WallSpec {
   double length = 0.0;        ///< of a finite cylinder's barrel between its rounded ends (m; 0: infinite)
   double spin = 0.0;          ///< angular velocity about the axis (rad/s, cylinder)
   std::uint32_t material = 0;
+  std::shared_ptr<const MeshFeatures> mesh;  ///< read, repaired and scaled to m at load (mesh walls)
 
   /// The engine's wall.
   Wall wall() const {
@@ -74,6 +77,7 @@ struct WallSpec {
     w.cylinder = Cylinder{point, axis, radius};
     if (length > 0.0) w.cylinder.halfLength = 0.5 * length;
     w.spin = spin;
+    w.origin = point;  // Wall::mesh is set where the world takes the mesh (build_world.cpp)
     return w;
   }
 };

@@ -20,6 +20,7 @@
 #include "sqdem/geometry/superquadric.hpp"
 #include "sqdem/interaction/interactions.hpp"
 #include "sqdem/world/energy_ledger.hpp"
+#include "sqdem/world/mesh_tree.hpp"
 #include "sqdem/world/neighbour_list.hpp"
 
 namespace sqdem {
@@ -63,6 +64,10 @@ class World {
 
   std::size_t addParticle(std::uint32_t shape, std::uint32_t material, const Vec3& centre, const Quat& q);
   void addWall(const Wall& wall) { walls_.push_back(wall); }
+  /// Adds a triangle mesh with its contact features for mesh walls (Wall::mesh is the index
+  /// returned); its candidate tree is built here.
+  std::uint32_t addMesh(MeshFeatures mesh);
+  const std::vector<MeshFeatures>& meshes() const { return meshes_; }
 
   void setGravity(const Vec3& g) { gravity_ = g; }
   const Vec3& gravity() const { return gravity_; }
@@ -138,13 +143,15 @@ class World {
   const ContactModel& model(std::uint32_t ma, std::uint32_t mb) const { return models_[ma * materials_.size() + mb]; }
   /// What the interaction layer reads of this world.
   InteractionScene interactionScene() const {
-    return {particles_, shapes_,    boundingRadius_, walls_, models_, materials_.size(), neighbours_.skin(),
+    return {particles_, shapes_, boundingRadius_, walls_, meshes_, models_, materials_.size(), neighbours_.skin(),
             dt_,        detector_, ledger_.has_value()};
   }
   /// The candidate list from the neighbour list and the walls within reach, carrying the
   /// histories of persisting pairs; kept until the next rebuild (particles or walls moved more
   /// than half the skin), so steps in between copy no contact records.
   void buildCandidates();
+  /// Mesh wall w's features within `reach` (m) of particle i, ascending.
+  void addMeshCandidates(std::uint32_t i, std::uint32_t w, double reach, std::vector<CandidateKey>& next) const;
   bool wallsMovedHalfSkin() const;
   double servoVelocity(std::size_t w) const;  ///< along wall w's normal (m/s), WallServo
   double largestRange() const;  ///< the largest gap any law acts across (m)
@@ -157,6 +164,8 @@ class World {
   ParticleStore particles_;
   std::vector<double> boundingRadius_;
   std::vector<Wall> walls_;
+  std::vector<MeshFeatures> meshes_;
+  std::vector<MeshTree> meshTrees_;       ///< meshes_[i]'s candidate search
   std::vector<Vec3> wallReference_;       ///< wall points at the last candidate build
   Interactions interactions_;
   ContactStatistics statistics_;
