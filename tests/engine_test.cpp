@@ -289,6 +289,28 @@ TEST(Engine, ExplicitParticlesAndParticleFilesRoundTrip) {
     const std::size_t k = j + b.size();  // the copy's rows follow the bed's
     EXPECT_EQ(twice.particles().position[k], twice.particles().position[j] + Vec3(6.0e-3, 0.0, 0.0));
   }
+  // A region keeps the file's particles whose bounding spheres lie within it (a strip cut out
+  // of the periodic bed): the count of the closed form, the particles in file order.
+  const Vec3 lo(1.0e-3, -1.0, -1.0), hi(5.0e-3, 1.0, 1.0);
+  std::vector<std::uint32_t> kept;  // ids of the bed's particles inside
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const double reach = original.shapes()[a.shape[i]].boundingRadius();
+    if (((a.position[i].array() - reach) >= lo.array()).all() && ((a.position[i].array() + reach) <= hi.array()).all()) {
+      kept.push_back(a.id[i]);
+    }
+  }
+  std::sort(kept.begin(), kept.end());
+  const World strip = buildWorld(
+      loadScene(writeScene("strip", replaced(restart, "allow_overlap: true}", "allow_overlap: true, region: {lo: [1.0e-3, -1, -1], hi: [5.0e-3, 1, 1]}}"))));
+  ASSERT_GT(kept.size(), 0u);
+  ASSERT_LT(kept.size(), a.size());
+  ASSERT_EQ(strip.particles().size(), kept.size());
+  const auto slotWithId = [](const ParticleStore& s, std::uint32_t id) {
+    return static_cast<std::size_t>(std::find(s.id.begin(), s.id.end(), id) - s.id.begin());
+  };
+  for (std::uint32_t j = 0; j < kept.size(); ++j) {  // the strip's particle j is the file's row kept[j]
+    EXPECT_EQ(strip.particles().position[slotWithId(strip.particles(), j)], a.position[slotWithId(a, kept[j])]);
+  }
 
   const std::string strict = replaced(restart, "allow_overlap: true", "allow_overlap: false");
   expectSceneError(strict, "overlaps");

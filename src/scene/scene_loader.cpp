@@ -7,8 +7,11 @@
 #include <cmath>
 #include <filesystem>
 #include <regex>
+#include <limits>
 #include <optional>
 #include <sstream>
+#include <tuple>
+#include <utility>
 
 #include "sqdem/geometry/superquadric.hpp"
 #include "sqdem/io/stl_mesh.hpp"
@@ -259,6 +262,14 @@ Material readMaterial(const Reader& r, const YAML::Node& m, const std::string& w
   out.yieldStrength = r.number(m, "yield_strength", where, 0.0);
   if (out.yieldStrength < 0.0) r.fail(m["yield_strength"], where + ".yield_strength", "must be > 0 (Pa)");
   return out;
+}
+
+/// A box {lo: [x, y, z], hi: [x, y, z]} (m), hi > lo.
+std::pair<Vec3, Vec3> readRegion(const Reader& r, const YAML::Node& region, const std::string& where) {
+  r.allowOnly(region, where, {"lo", "hi"});
+  const Vec3 lo = r.vector(region, "lo", where), hi = r.vector(region, "hi", where);
+  if (!((hi - lo).minCoeff() > 0.0)) r.fail(region, where, "needs hi > lo");
+  return {lo, hi};
 }
 
 /// A mesh wall's STL file (relative to the scene file), read, repaired (io/stl_mesh.hpp) and
@@ -517,7 +528,7 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
     const std::string where = "insert[" + std::to_string(k) + "]";
     const YAML::Node in = insert[k];
     if (in.IsMap() && in["file"]) {
-      r.allowOnly(in, where, {"file", "allow_overlap", "offset"});
+      r.allowOnly(in, where, {"file", "allow_overlap", "offset", "region"});
       const std::filesystem::path file = std::filesystem::path(path).parent_path() / r.text(in, "file", where);
       if (!std::filesystem::is_regular_file(file)) {
         r.fail(in["file"], where + ".file", "cannot open '" + file.string() + "' (paths are relative to the scene file)");
@@ -530,9 +541,15 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
       } catch (const SceneError& e) {
         r.fail(in["file"], where + ".file", e.what());
       }
+      // region: only the particles whose bounding spheres lie within it (cutting a strip out of
+      // a periodic bed, whose particles cross its faces).
+      Vec3 keepLo = Vec3::Constant(-std::numeric_limits<double>::infinity()), keepHi = -keepLo;
+      if (in["region"]) std::tie(keepLo, keepHi) = readRegion(r, in["region"], where + ".region");
       for (ParticleSpec& p : particles) {
         p.allowOverlap = allowOverlap;
         p.centre += offset;
+        const double reach = Superquadric(p.semiAxes.x(), p.semiAxes.y(), p.semiAxes.z(), p.n1, p.n2).boundingRadius();
+        if (((p.centre.array() - reach) < keepLo.array()).any() || ((p.centre.array() + reach) > keepHi.array()).any()) continue;
         scene.particles.push_back(std::move(p));
       }
       continue;
@@ -555,10 +572,7 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
     spec.material = r.lookup(in["material"], where + ".material", scene.materials, "material");
     const YAML::Node region = in["region"];
     if (!region) r.fail(in, where + ".region", "missing ({lo: [x,y,z], hi: [x,y,z]})");
-    r.allowOnly(region, where + ".region", {"lo", "hi"});
-    spec.lo = r.vector(region, "lo", where + ".region");
-    spec.hi = r.vector(region, "hi", where + ".region");
-    if (!((spec.hi - spec.lo).minCoeff() > 0.0)) r.fail(region, where + ".region", "needs hi > lo");
+    std::tie(spec.lo, spec.hi) = readRegion(r, region, where + ".region");
     for (int d = 0; d < 3; ++d) {
       if (!scene.domain.periodic[d] && (spec.lo(d) < scene.domain.lo(d) || spec.hi(d) > scene.domain.hi(d))) {
         r.fail(region, where + ".region", std::string("reaches outside the domain along ") + "xyz"[d] +
