@@ -48,16 +48,17 @@ ContactGeometry detect(const InteractionScene& scene, const std::vector<double>&
   // Gaps within the skin are solved too (rough and adhesive contacts act across them, and every
   // candidate is warm-started next step).
   const DetectorSettings settings{.cutoff = scene.skin, .tolerance = scene.detector.tolerance, .curvatures = curvatures};
-  const WarmStart warm{s.localA[k], s.localB[k], s.overlap[k]};
-  const bool touched = s.status[k] == ContactStatus::Converged && scene.detector.warmStart;
-  if constexpr (Kind == PairKind::ParticleCylinder) {
-    Cylinder image = scene.walls[b & ~wallFlag].cylinder;  // the image nearest A (a periodic box)
-    image.point += s.shift[k];
-    return detectContact(A, poseOf(p, a), image, settings, touched ? &warm : nullptr);
-  } else if constexpr (Kind == PairKind::ParticleMesh) {
+  if constexpr (Kind == PairKind::ParticleCylinder || Kind == PairKind::ParticleMesh) {
+    const WarmStart warm{s.localA[k], s.localB[k], s.overlap[k]};
+    const WarmStart* touched = s.status[k] == ContactStatus::Converged && scene.detector.warmStart ? &warm : nullptr;
     const Wall& wall = scene.walls[b & ~wallFlag];
-    return detectContact(A, poseOf(p, a), scene.meshes[wall.mesh], wall.origin, s.feature[k], settings,
-                         touched ? &warm : nullptr);
+    if constexpr (Kind == PairKind::ParticleCylinder) {
+      Cylinder image = wall.cylinder;  // the image nearest A (a periodic box)
+      image.point += s.shift[k];
+      return detectContact(A, poseOf(p, a), image, settings, touched);
+    } else {
+      return detectContact(A, poseOf(p, a), scene.meshes[wall.mesh], wall.origin, s.feature[k], settings, touched);
+    }
   } else if constexpr (withWall(Kind)) {
     return detectContact(A, poseOf(p, a), scene.walls[b & ~wallFlag].plane, settings);
   } else {
