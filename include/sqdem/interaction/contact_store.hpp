@@ -114,11 +114,11 @@ struct ContactStore {
     return array != &curvatureCache || withCurvatureCache;
   }
 
-  /// Asks the memory system for every cache line of contact k in every kept array, ahead of a
+  /// Asks the memory system for every cache line of contact k in every kept array but the mesh
+  /// feature (only mesh contacts read it; its prefetch cost the sphere kernel 0.9 %), ahead of a
   /// kernel's use: a group visits its contacts in ascending order, but the store's ~16 arrays
   /// are more streams than the hardware prefetcher follows (measured: the loads of a record
-  /// missed the cache in the ellipsoid kernel); not the mesh feature, which only mesh contacts
-  /// read (measured: its prefetch cost the sphere kernel 0.9 %). Always inlined, and the arrays named one by
+  /// missed the cache in the ellipsoid kernel). Always inlined, and the arrays named one by
   /// one: GCC 12 takes a function that does nothing but prefetch for one without effects and
   /// drops the call (measured: a binary without a single prefetch instruction).
   [[gnu::always_inline]] void prefetch(std::size_t k) const {
