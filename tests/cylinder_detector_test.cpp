@@ -212,5 +212,50 @@ TEST(CylinderDetector, FiniteCylinderBarrelMeetsItsEnd) {
   EXPECT_LT(largestJump, 2e-3);  // 1/400 of the travel: a smooth change, no jump at the switch
 }
 
+// A flat-ended finite cylinder (radius 1, barrel y in [-1, 3]): a sphere anywhere around it
+// meets it with overlap r - dist(centre, solid cylinder) (closed form: the radial and axial
+// excesses over the barrel, max(rho - R, 0) and max(|y - 1| - 2, 0), combined by Pythagoras),
+// on the barrel, a disc or a rim; an ellipsoid at a rim meets the common-normal conditions.
+TEST(CylinderDetector, FlatEndsAreDiscsWithRims) {
+  Cylinder c{Vec3(0.0, 1.0, 0.0), Vec3::UnitY(), 1.0};
+  c.halfLength = 2.0;
+  c.flatEnds = true;
+  const double r = 0.4;
+  const Superquadric ball = Superquadric::sphere(r);
+  const auto distance = [&](const Vec3& x) {
+    const double rho = std::hypot(x.x(), x.z()), axial = std::abs(x.y() - 1.0);
+    return std::hypot(std::max(rho - 1.0, 0.0), std::max(axial - 2.0, 0.0));
+  };
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(-1.5, 1.5), v(-1.5, 3.5);
+  int barrel = 0, disc = 0, rim = 0;
+  for (int trial = 0; trial < 4000; ++trial) {
+    const Vec3 x(u(rng), v(rng), u(rng));
+    const double d = distance(x);
+    if (d < 0.05 || d > 0.95 * r) continue;
+    const ContactGeometry g = detectContact(ball, Pose{x, Quat::Identity()}, c);
+    ASSERT_TRUE(g.converged()) << x.transpose();
+    EXPECT_NEAR(g.overlap, r - d, 1e-12) << x.transpose();
+    EXPECT_NEAR(distance(g.pointB), 0.0, 1e-12);
+    const double rho = std::hypot(x.x(), x.z()), axial = std::abs(x.y() - 1.0);
+    barrel += axial <= 2.0;
+    disc += rho <= 1.0;
+    rim += axial > 2.0 && rho > 1.0;
+  }
+  EXPECT_GT(barrel, 50);
+  EXPECT_GT(disc, 50);
+  EXPECT_GT(rim, 50);
+
+  const Superquadric A(0.6, 0.4, 0.3, 2.0, 2.0);
+  const Pose atRim{Vec3(1.15, 3.2, 0.1), Quat(0.9, 0.1, 0.3, -0.2).normalized()};
+  const ContactGeometry g = detectContact(A, atRim, c);
+  ASSERT_TRUE(g.touching());
+  EXPECT_NEAR(g.pointB.y(), 3.0, 1e-12);  // on the rim: the end's plane, at the radius
+  EXPECT_NEAR(std::hypot(g.pointB.x(), g.pointB.z()), 1.0, 1e-12);
+  EXPECT_NEAR(g.normal.dot(Vec3(-g.pointB.z(), 0.0, g.pointB.x())), 0.0, 1e-7);  // normal to the rim (Brent's angle: ~1.5e-8)
+  EXPECT_NEAR((atRim.rotation() * A.outwardNormal(g.localPointA)).dot(g.normal), 1.0, 1e-12);
+  EXPECT_LT(((g.pointB - g.pointA) + g.overlap * g.normal).norm(), 1e-8);
+}
+
 }  // namespace
 }  // namespace sqdem

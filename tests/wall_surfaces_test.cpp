@@ -74,5 +74,23 @@ TEST(WallSurfaces, CylinderIsATubeAcrossTheBox) {
   EXPECT_NEAR(area, chords, 1e-12);
 }
 
+// A finite flat-ended roller inside the box (y in [0.5, 1.5]): the tube over its barrel and
+// its two end discs, each a 48-gon facing out along the axis with the polygon's area.
+TEST(WallSurfaces, FlatEndsAreDiscs) {
+  std::vector<Wall> walls(1);
+  walls[0].shape = WallShape::Cylinder;
+  walls[0].cylinder = Cylinder{Vec3(0.5, 1.0, 2.0), Vec3::UnitY(), 0.25};
+  walls[0].cylinder.halfLength = 0.5;
+  walls[0].cylinder.flatEnds = true;
+  const WallSurfaces s = wallSurfaces(walls, {}, unitBox(), 48);
+  ASSERT_EQ(s.polygons.size(), 50u);
+  const double polygon = 0.5 * 48 * 0.25 * 0.25 * std::sin(2.0 * std::numbers::pi / 48);
+  const Vec3 low = areaVector(s, 48), high = areaVector(s, 49);
+  EXPECT_NEAR((low + polygon * Vec3::UnitY()).norm(), 0.0, 1e-12);
+  EXPECT_NEAR((high - polygon * Vec3::UnitY()).norm(), 0.0, 1e-12);
+  for (std::uint32_t i : s.polygons[48]) EXPECT_NEAR(s.points[i].y(), 0.5, 1e-15);
+  for (std::uint32_t i : s.polygons[49]) EXPECT_NEAR(s.points[i].y(), 1.5, 1e-15);
+}
+
 }  // namespace
 }  // namespace sqdem

@@ -12,9 +12,10 @@
 // normal), where the support function of A's shadow seen from the axis has its one minimum as
 // long as the axis lies outside A, then polished to round-off as the root of f'. Radius 0 is a
 // straight line: a mesh edge (line_contact.hpp).
-// A finite cylinder (rounded ends) is solved as the infinite one; when the contact falls beyond
-// the barrel, the nearer end's hemisphere takes it: A against the sphere of the cylinder's radius
-// centred at the end of the axis segment (the pair detector).
+// A finite cylinder is solved as the infinite one; when the contact falls beyond the barrel, the
+// nearer end takes it: a rounded end as A against the sphere of the cylinder's radius centred at
+// the end of the axis segment (the pair detector), a flat end as its disc or its rim
+// (flatEndContact).
 
 #include <boost/math/tools/minima.hpp>
 #include <boost/math/tools/toms748_solve.hpp>
@@ -173,6 +174,49 @@ ContactGeometry barrelContact(const Superquadric& A, const Pose& poseA, const Cy
   return g;
 }
 
+/// A beyond the barrel of a flat-ended cylinder: the end disc (the plane through `end` facing
+/// `out`, kept when the touching point lies within the radius), else its rim. On the rim the
+/// contact is the point contact (point_detector.cpp) at the rim point of largest overlap
+/// (smallest gap): there A's normal is normal to the rim, a common normal. That point is found
+/// by Brent's method over the rim's angle, within 2 bounding radii of A's azimuth (to ~1.5e-8
+/// rad). The rim, a kink, is seen by the laws as flat (mesh_detector.cpp).
+ContactGeometry flatEndContact(const Superquadric& A, const Pose& poseA, const Cylinder& c, const Vec3& end, const Vec3& out,
+                               const DetectorSettings& settings) {
+  if ((poseA.position - end).dot(out) > 0.0) {  // in front of the disc
+    ContactGeometry disc = detectContact(A, poseA, Plane{end, out}, settings);
+    const Vec3 q = disc.pointB - end;
+    if (!disc.converged() || (q - q.dot(out) * out).norm() <= c.radius) return disc;
+  }
+  const Vec3 q = poseA.position - end, radial = q - q.dot(out) * out;
+  const Vec3 e1 = radial.norm() > 0.0 ? Vec3(radial.normalized()) : out.unitOrthogonal(), e2 = out.cross(e1);
+  const auto rimPoint = [&](double angle) { return end + c.radius * (std::cos(angle) * e1 + std::sin(angle) * e2); };
+  WarmStart last{};
+  bool warm = false;
+  int evaluations = 0;
+  // The search sees the signed distance everywhere (no cut-off: no plateau of culled points).
+  DetectorSettings search = settings;
+  search.cutoff = std::numeric_limits<double>::infinity();
+  search.curvatures = false;
+  const auto solve = [&](double angle, const DetectorSettings& s) {
+    ContactGeometry g = detectContact(A, poseA, rimPoint(angle), s, warm ? &last : nullptr);
+    evaluations += g.iterations + 1;
+    if (g.converged()) last = {g.localPointA, g.localPointB, g.overlap}, warm = true;
+    return g;
+  };
+  const double halfWidth = std::min(0.5 * std::numbers::pi, 2.0 * A.boundingRadius() / c.radius);
+  std::uintmax_t used = static_cast<std::uintmax_t>(settings.maxIterations);
+  const auto best = boost::math::tools::brent_find_minima(
+      [&](double angle) {
+        const ContactGeometry g = solve(angle, search);
+        return g.converged() ? -g.overlap : std::numeric_limits<double>::max();
+      },
+      -halfWidth, halfWidth, angleBits, used);
+  ContactGeometry g = solve(best.first, settings);
+  g.iterations = evaluations;
+  if (g.converged() && used >= static_cast<std::uintmax_t>(settings.maxIterations)) g.status = ContactStatus::MaxIterations;
+  return g;
+}
+
 }  // namespace
 
 ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const Cylinder& roller,
@@ -185,7 +229,8 @@ ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const Cy
   const double along = (g.converged() ? g.pointB : poseA.position).dot(roller.axis) - roller.point.dot(roller.axis);
   if (std::abs(along) <= roller.halfLength) return g;  // on the barrel
   const Vec3 end = roller.point + std::copysign(roller.halfLength, along) * roller.axis;
-  ContactGeometry cap = detectContact(A, poseA, Superquadric::sphere(roller.radius), Pose{end, Quat::Identity()}, settings);
+  ContactGeometry cap = roller.flatEnds ? flatEndContact(A, poseA, roller, end, std::copysign(1.0, along) * roller.axis, settings)
+                                        : detectContact(A, poseA, Superquadric::sphere(roller.radius), Pose{end, Quat::Identity()}, settings);
   cap.localPointB = cap.pointB;  // kinematic bodies keep world-frame points
   cap.iterations += g.iterations;
   return cap;

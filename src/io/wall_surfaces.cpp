@@ -48,14 +48,14 @@ void addPlane(WallSurfaces& s, const Plane& plane, std::uint32_t w, const Domain
   s.wall.push_back(w);
 }
 
-/// A tube of `segments` quads over the box's extent along the axis.
+/// A tube of `segments` quads over the box's extent along the axis; a flat end within it, a disc.
 void addCylinder(WallSurfaces& s, const Cylinder& c, std::uint32_t w, const Domain& box, int segments) {
   double lo = INFINITY, hi = -INFINITY;
   for (int k = 0; k < 8; ++k) {
     const double t = c.axis.dot(corner(box, k) - c.point);
     lo = std::min(lo, t), hi = std::max(hi, t);
   }
-  lo = std::max(lo, -c.halfLength), hi = std::min(hi, c.halfLength);  // a finite barrel (its rounded ends are not drawn)
+  lo = std::max(lo, -c.halfLength), hi = std::min(hi, c.halfLength);  // a finite barrel (rounded ends are not drawn)
   const Vec3 u = normalTo(c.axis), v = c.axis.cross(u);
   const auto first = static_cast<std::uint32_t>(s.points.size());
   for (int k = 0; k < segments; ++k) {
@@ -67,6 +67,17 @@ void addCylinder(WallSurfaces& s, const Cylinder& c, std::uint32_t w, const Doma
   for (int k = 0; k < segments; ++k) {  // outward normals: counter-clockwise seen from outside
     const std::uint32_t a = first + 2 * k, b = first + 2 * ((k + 1) % segments);
     s.polygons.push_back({a, b, b + 1, a + 1});
+    s.wall.push_back(w);
+  }
+  if (!c.flatEnds) return;
+  std::vector<std::uint32_t> low, high;  // counter-clockwise seen from outside: against the axis at lo
+  for (int k = 0; k < segments; ++k) {
+    low.push_back(first + 2 * (segments - 1 - k));
+    high.push_back(first + 2 * k + 1);
+  }
+  for (auto [end, disc] : {std::pair{lo, std::move(low)}, std::pair{hi, std::move(high)}}) {
+    if (std::abs(end) != c.halfLength) continue;  // the box cuts the barrel before its end
+    s.polygons.push_back(std::move(disc));
     s.wall.push_back(w);
   }
 }

@@ -475,7 +475,7 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
     if (!walls.IsSequence()) r.fail(walls, "walls", "must be a list");
     for (std::size_t k = 0; k < walls.size(); ++k) {
       const std::string where = "walls[" + std::to_string(k) + "]";
-      r.allowOnly(walls[k], where, {"point", "normal", "axis", "radius", "length", "spin", "mesh", "scale", "velocity", "material"});
+      r.allowOnly(walls[k], where, {"point", "normal", "axis", "radius", "length", "ends", "spin", "mesh", "scale", "velocity", "material"});
       WallSpec w;
       w.point = r.vector(walls[k], "point", where);
       // A plane has a normal; a cylinder an axis, a radius and optionally a spin; a mesh a file.
@@ -494,12 +494,12 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
       const Vec3 unit = w.mesh ? Vec3::UnitZ() : r.vector(walls[k], direction, where);
       if (!(unit.norm() > 0.0)) r.fail(walls[k][direction], where + "." + direction, "must be non-zero");
       if (w.mesh) {
-        for (const char* key : {"radius", "length", "spin"}) {
+        for (const char* key : {"radius", "length", "ends", "spin"}) {
           if (walls[k][key]) r.fail(walls[k][key], where + "." + key, "belongs to a cylinder (axis), not a mesh");
         }
       } else if (walls[k]["normal"]) {
         w.normal = unit.normalized();
-        for (const char* key : {"radius", "length", "spin"}) {
+        for (const char* key : {"radius", "length", "ends", "spin"}) {
           if (walls[k][key]) r.fail(walls[k][key], where + "." + key, "belongs to a cylinder (axis), not a plane (normal)");
         }
       } else {
@@ -508,6 +508,12 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
         w.radius = r.positive(walls[k], "radius", where, "m");
         w.spin = r.number(walls[k], "spin", where, 0.0);
         if (walls[k]["length"]) w.length = r.positive(walls[k], "length", where, "m");
+        if (const YAML::Node ends = walls[k]["ends"]) {
+          const std::string kind = r.text(walls[k], "ends", where);
+          if (kind != "flat" && kind != "rounded") r.fail(ends, where + ".ends", "must be flat or rounded");
+          if (w.length == 0.0) r.fail(ends, where + ".ends", "belongs to a finite cylinder: give its length (m)");
+          w.flatEnds = kind == "flat";
+        }
       }
       if (walls[k]["velocity"]) w.velocity = r.vector(walls[k], "velocity", where);
       if (!walls[k]["material"]) r.fail(walls[k], where + ".material", "missing");

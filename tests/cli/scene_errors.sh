@@ -62,6 +62,10 @@ refused "scale on a plane" "'walls\[0\].scale': belongs to a mesh wall" \
   "$(variant plane_scale 's/{point: \[0, 0, 0\], normal: \[0, 0, 1\], material: glass}/{point: [0, 0, 0], normal: [0, 0, 1], scale: 0.001, material: glass}/')"
 refused "mesh scale 0" "'walls\[0\].scale': must be > 0" \
   "$(variant mesh_scale 's/{point: \[0, 0, 0\], normal: \[0, 0, 1\], material: glass}/{point: [0, 0, 0], mesh: tri.stl, scale: 0, material: glass}/')"
+refused "cylinder ends without a length" "'walls\[1\].ends': belongs to a finite cylinder: give its length" \
+  "$(variant ends_infinite 's/{point: \[0, 0, 12.0e-3\], normal: \[0, 0, -1\], material: glass}/{point: [3.0e-3, 0, 12.0e-3], axis: [0, 1, 0], radius: 1.0e-3, ends: flat, material: glass}/')"
+refused "cylinder ends square" "'walls\[1\].ends': must be flat or rounded" \
+  "$(variant ends_square 's/{point: \[0, 0, 12.0e-3\], normal: \[0, 0, -1\], material: glass}/{point: [3.0e-3, 0, 12.0e-3], axis: [0, 1, 0], radius: 1.0e-3, length: 4.0e-3, ends: square, material: glass}/')"
 expect_error "--out twice" 2 "'--out' is given twice" "$sqdem" run "$base" --out "$out" --out "$out"
 
 # A domain in m with particles in um runs (the cell grid adapts) and says so.

@@ -1,8 +1,12 @@
 #pragma once
 // Circular cylinder (a roller, or a roll section of a calender): the particles live outside it.
-// Infinite along its axis, or finite with rounded ends: the points within `radius` of the axis
-// segment [point - halfLength axis, point + halfLength axis] (a capsule). Its surface curvatures
-// are 1/radius around the axis and 0 along it on the barrel, 1/radius both ways on an end.
+// Infinite along its axis, or finite: the barrel over the axis segment
+// [point - halfLength axis, point + halfLength axis] closed by rounded ends (the points within
+// `radius` of the segment: a capsule) or by flat ones (discs; their rims are edges). Its surface
+// curvatures are 1/radius around the axis and 0 along it on the barrel, 1/radius both ways on a
+// rounded end, 0 on a disc. distance() and fromAxis() are the capsule's: for flat ends a lower
+// bound of the distance (the capsule holds the flat-ended cylinder), which is what candidate
+// searches need.
 
 #include <algorithm>
 #include <limits>
@@ -17,6 +21,7 @@ struct Cylinder {
   Vec3 axis = Vec3::UnitY();   ///< unit direction of the axis
   double radius = 1.0;         ///< (m), > 0
   double halfLength = std::numeric_limits<double>::infinity();  ///< of the barrel (m)
+  bool flatEnds = false;       ///< a finite one's ends: discs, not hemispheres
 
   bool finite() const { return halfLength < std::numeric_limits<double>::infinity(); }
   /// The station of x along the axis, clamped to the barrel (m).

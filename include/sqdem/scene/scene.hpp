@@ -62,7 +62,8 @@ struct WallSpec {
   Vec3 point = Vec3::Zero(), normal = Vec3::UnitZ(), velocity = Vec3::Zero();
   Vec3 axis = Vec3::UnitY();  ///< unit (cylinder)
   double radius = 0.0;        ///< (m, cylinder)
-  double length = 0.0;        ///< of a finite cylinder's barrel between its rounded ends (m; 0: infinite)
+  double length = 0.0;        ///< of a finite cylinder's barrel between its ends (m; 0: infinite)
+  bool flatEnds = false;      ///< a finite cylinder's ends: discs (`ends: flat`), not hemispheres
   double spin = 0.0;          ///< angular velocity about the axis (rad/s, cylinder)
   std::uint32_t material = 0;
   std::shared_ptr<const MeshFeatures> mesh;  ///< read, repaired and scaled to m at load (mesh walls)
@@ -76,6 +77,7 @@ struct WallSpec {
     w.shape = shape;
     w.cylinder = Cylinder{point, axis, radius};
     if (length > 0.0) w.cylinder.halfLength = 0.5 * length;
+    w.cylinder.flatEnds = flatEnds;
     w.spin = spin;
     w.origin = point;  // Wall::mesh is set where the world takes the mesh (build_world.cpp)
     return w;
