@@ -36,7 +36,7 @@ World rollerOverParticle(const Superquadric& shape, double friction, double spin
   Wall top{.material = 2};
   top.shape = WallShape::Cylinder;
   top.cylinder = Cylinder{Vec3(0.0, 0.0, 2.0 * height + rollerRadius - squeeze), Vec3::UnitY(), rollerRadius};
-  top.spin = spin;
+  top.angularVelocity = spin * Vec3::UnitY();
   world.addWall(top);
   world.addParticle(0, 0, Vec3(0.0, 0.0, height), Quat::Identity());
   world.setTimeStep(1e-8);
@@ -129,7 +129,7 @@ TEST(KinematicBody, RollerActsAcrossAPeriodicBoundary) {
     // Periodic: at x = L - 0.7 mm, its image at -0.7 mm; open: at -0.7 mm itself.
     const double x = periodic ? length - 0.7e-3 : -0.7e-3;
     roller.cylinder = Cylinder{Vec3(x, 0.0, 0.8e-3 + rollerRadius + 0.6e-3), Vec3::UnitY(), rollerRadius};
-    roller.spin = 100.0;
+    roller.angularVelocity = 100.0 * Vec3::UnitY();
     world.addWall(roller);
     world.addParticle(0, 0, Vec3(0.5e-3, 0.0, 0.6e-3), Quat(Eigen::AngleAxisd(0.3, Vec3(1, 1, 0).normalized())));
     world.particles().velocity[0] = Vec3(0.0, 0.0, 0.2);

@@ -105,7 +105,7 @@ TEST(MeshDetector, FlatMeshGivesThePlanesContactBitForBit) {
     ASSERT_TRUE(expected.touching());
     int touching = 0;
     for (std::uint32_t feature = 0; feature < f.featureCount(); ++feature) {
-      const ContactGeometry g = detectContact(shapes[s], poses[s], f, origin, feature);
+      const ContactGeometry g = detectContact(shapes[s], poses[s], f, Pose{origin, Quat::Identity()}, feature);
       if (!g.converged()) continue;
       ++touching;
       EXPECT_EQ(f.kind(feature), FeatureKind::Face);
@@ -136,7 +136,7 @@ TEST(MeshDetector, SphereAroundACubeTouchesExactlyOneFeatureWithTheClosedFormOve
     if (distance == 0.0 || distance > 0.95 * r) continue;  // inside, or too far to touch
     int touching = 0;
     for (std::uint32_t feature = 0; feature < f.featureCount(); ++feature) {
-      const ContactGeometry g = detectContact(ball, Pose{c, Quat::Identity()}, f, Vec3::Zero(), feature);
+      const ContactGeometry g = detectContact(ball, Pose{c, Quat::Identity()}, f, Pose{}, feature);
       if (!g.touching()) continue;
       ++touching;
       EXPECT_NEAR(g.overlap, r - distance, 1e-14) << c.transpose();
@@ -153,13 +153,47 @@ TEST(MeshDetector, SphereAroundACubeTouchesExactlyOneFeatureWithTheClosedFormOve
   EXPECT_GT(vertices, 20);
 }
 
+TEST(MeshDetector, ATurnedMeshGivesItsOwnFramesContactTurned) {
+  // The same touch seen from the mesh's frame and from the world with the mesh at a turned,
+  // moved pose: the detector places each feature by the pose, so the results are one rigid
+  // motion apart (round-off only), for faces, edges and corners alike.
+  const MeshFeatures f(cube());
+  const Pose cubePose{Vec3(0.3, -1.2, 2.0), Quat(Eigen::AngleAxisd(2.1, Vec3(1, -2, 0.5).normalized()))};
+  const Superquadric shapes[] = {Superquadric::sphere(0.3), Superquadric::ellipsoid(0.3, 0.15, 0.1)};
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> u(-0.25, 1.25);
+  int counts[3] = {0, 0, 0};
+  for (int trial = 0; trial < 1500; ++trial) {
+    const Superquadric& A = shapes[trial % 2];
+    const Pose inCube{Vec3(u(random), u(random), u(random)), Quat(Eigen::AngleAxisd(u(random) * 3, Vec3(1, 1, 0).normalized()))};
+    if (distanceToCube(inCube.position) == 0.0) continue;
+    const Pose inWorld{cubePose.toWorld(inCube.position), cubePose.orientation * inCube.orientation};
+    for (std::uint32_t feature = 0; feature < f.featureCount(); ++feature) {
+      const ContactGeometry own = detectContact(A, inCube, f, Pose{}, feature);
+      const ContactGeometry turned = detectContact(A, inWorld, f, cubePose, feature);
+      ASSERT_EQ(own.touching(), turned.touching()) << trial << " feature " << feature;
+      if (!own.touching()) continue;
+      ++counts[static_cast<int>(f.kind(feature))];
+      EXPECT_NEAR(turned.overlap, own.overlap, 1e-12);
+      EXPECT_LT((turned.pointB - cubePose.toWorld(own.pointB)).norm(), 1e-12);
+      EXPECT_LT((turned.pointA - cubePose.toWorld(own.pointA)).norm(), 1e-12);
+      EXPECT_LT((turned.normal - cubePose.orientation * own.normal).norm(), 1e-9);
+      EXPECT_LT((turned.localPointB - own.localPointB).norm(), 1e-12);
+      EXPECT_LT((turned.localPointA - own.localPointA).norm(), 1e-9);
+    }
+  }
+  EXPECT_GT(counts[static_cast<int>(FeatureKind::Face)], 50);
+  EXPECT_GT(counts[static_cast<int>(FeatureKind::Edge)], 50);
+  EXPECT_GT(counts[static_cast<int>(FeatureKind::Vertex)], 20);
+}
+
 TEST(MeshDetector, EllipsoidOnACubeEdgeSatisfiesTheCommonNormalConditions) {
   const MeshFeatures f(cube());
   const Superquadric e = Superquadric::ellipsoid(0.3, 0.15, 0.1);
   const Pose pose{Vec3(1.06, 0.5, 1.05), Quat(Eigen::AngleAxisd(0.4, Vec3(1, 1, 0).normalized()))};
   int touching = 0;
   for (std::uint32_t feature = 0; feature < f.featureCount(); ++feature) {
-    const ContactGeometry g = detectContact(e, pose, f, Vec3::Zero(), feature);
+    const ContactGeometry g = detectContact(e, pose, f, Pose{}, feature);
     if (!g.touching()) continue;
     ++touching;
     ASSERT_EQ(f.kind(feature), FeatureKind::Edge);

@@ -14,6 +14,14 @@
 //             that does not use curvatures (volume_sphere_hertz). Under an edge between facets
 //             the overlap is larger by the edge's distance beyond the radius,
 //             R (1 / cos(pi / N) - 1).
+//   turning   A flat mesh turning about its normal (a turntable, angular_velocity in the scene)
+//             under a sphere at rest: the table's orientation is exp(Omega t); friction drags the
+//             sphere along the table's surface velocity Omega x r until it rolls without
+//             slipping (its contact point moves with the table), and then its velocity turns
+//             at 2 Omega / 7 (differentiating the no-slip condition with I = 2 m r^2 / 5:
+//             dv/dt = I / (I + m r^2) Omega z x v);
+//             the sphere brakes the table (torque against Omega); the energy ledger, whose
+//             bodies' work includes T . Omega, balances.
 
 #include <gtest/gtest.h>
 
@@ -21,6 +29,7 @@
 #include <filesystem>
 #include <fstream>
 #include <numbers>
+#include <optional>
 
 #include "sqdem/contact/detector.hpp"
 #include "sqdem/scene/build_world.hpp"
@@ -153,7 +162,7 @@ TEST(MeshWall, FacetedCylinderUnderAFacetAndUnderAnEdge) {
   const auto contacts = [&](const Pose& pose) {
     std::vector<ContactGeometry> found;
     for (std::uint32_t f = 0; f < mesh.featureCount(); ++f) {
-      const ContactGeometry g = detectContact(ball, pose, mesh, axis, f);
+      const ContactGeometry g = detectContact(ball, pose, mesh, Pose{axis, Quat::Identity()}, f);
       if (g.touching()) found.push_back(g);
     }
     return found;
@@ -219,6 +228,86 @@ TEST(MeshWall, FacetedRollerForceInTheEngine) {
             << meshCurved / exactCurved << ": the facet is flat where the cylinder has 1/R)\n";
   EXPECT_LT(meshCurved, exactCurved * 1.2);
   EXPECT_GT(meshCurved, exactCurved);  // a flat counter-surface gives a larger contact: stiffer
+}
+
+TEST(MeshWall, TurntableDragsASphereUntilItRolls) {
+  writeFloor(scratch("table.stl"), -0.02, 0.02, 1);  // two triangles, their shared edge along y = x
+  const double Omega = 20.0, r = 1e-3;
+  const Vec3 start(5e-3, -3e-3, r - 1.25e-7);  // resting (Hertz overlap under its weight), 5.7 mm from the edge
+  const std::filesystem::path path = scratch("turntable.yaml");
+  std::ofstream(path) << "seed: 1\n"
+                         "domain: {lo: [-0.03, -0.03, -0.01], hi: [0.03, 0.03, 0.01]}\n"
+                         "gravity: [0, 0, -9.81]\n"
+                         "time_step: auto\n"
+                         "materials:\n"
+                         "  grain: {youngs_modulus: 1.0e8, poisson_ratio: 0.3, density: 2500, friction: 0.5, restitution: 0.5}\n"
+                         "shapes:\n"
+                         "  ball: {semi_axes: [1.0e-3, 1.0e-3, 1.0e-3]}\n"
+                         "interactions:\n"
+                         "  - {materials: [grain, grain], normal: elliptic_hertz, tangential: elliptic_mindlin}\n"
+                         "walls:\n"
+                         "  - {mesh: sqdem_test_table.stl, point: [0, 0, 0], angular_velocity: [0, 0, "
+                      << Omega
+                      << "], material: grain}\n"
+                         "particles:\n"
+                         "  - {shape: ball, material: grain, centre: ["
+                      << start.x() << ", " << start.y() << ", " << start.z()
+                      << "], allow_overlap: true}\n"
+                         "stages:\n"
+                         "  - {name: turn, duration: 0.02}\n";
+  World world = buildWorld(loadScene(path.string()));
+  ASSERT_EQ(world.walls()[0].angularVelocity, Vec3(0.0, 0.0, Omega));
+  world.enableEnergyLedger();
+  const auto onlyContact = [&] {
+    std::optional<ContactView> found;
+    for (const ContactView c : world.contacts()) {
+      if (c.onWall() && c.overlap() > 0.0) {
+        EXPECT_FALSE(found) << "one feature answers";
+        found = c;
+      }
+    }
+    EXPECT_TRUE(found);
+    return *found;
+  };
+  const ParticleStore& p = world.particles();
+  const int steps = static_cast<int>(0.02 / world.timeStep());
+  double worstSlip = 0.0, worstResidual = 0.0;
+  Vec3 halfwayVelocity = Vec3::Zero();
+  for (int step = 1; step <= steps; ++step) {
+    world.step();
+    const ContactView c = onlyContact();
+    const Wall& table = world.walls()[0];
+    const Vec3 surface = Vec3(0.0, 0.0, Omega).cross(c.point());  // the table's velocity at the contact
+    const Vec3 onSphere = -c.force();  // ContactView's force acts on B, the table
+    const Vec3 tangential = onSphere - onSphere.dot(c.normal()) * c.normal();
+    const Vec3 slip = p.velocity[0] + p.angularVelocity[0].cross(c.point() - p.position[0]) - surface;
+    if (step == 10) {
+      // Sliding: friction on the sphere along the table's motion relative to it, the sphere's
+      // reaction braking the table.
+      EXPECT_GT(tangential.normalized().dot(-slip.normalized()), 0.999) << "dragged along the table's motion";
+      EXPECT_LT(table.torque.z() * Omega, 0.0) << "the sphere brakes the table";
+    }
+    if (step > steps / 2) worstSlip = std::max(worstSlip, slip.norm());
+    if (step == steps / 2) halfwayVelocity = p.velocity[0];
+    const EnergyLedger& ledger = *world.energyLedger();
+    worstResidual = std::max(worstResidual, std::abs(ledger.residual(world.kineticEnergy())));
+  }
+  const EnergyLedger& ledger = *world.energyLedger();
+  const double t = steps * world.timeStep();
+  const Quat turned(Eigen::AngleAxisd(Omega * t, Vec3::UnitZ()));
+  std::cout << "turntable: after " << t << " s the table turned " << Omega * t << " rad; the sphere's slip "
+            << worstSlip << " m/s (surface speed " << Omega * start.head<2>().norm() << " m/s); table work "
+            << ledger.bodies << " J, friction " << ledger.tangential << " J, worst residual " << worstResidual << " J\n";
+  EXPECT_LT(std::abs(world.walls()[0].orientation.angularDistance(turned)), 1e-12);
+  EXPECT_LT(worstSlip, 1e-3 * Omega * start.head<2>().norm()) << "rolls without slipping in the second half";
+  const Vec3 v0 = halfwayVelocity, v1 = p.velocity[0];
+  const double turn = std::atan2(v0.cross(v1).z(), v0.dot(v1)), rolling = 2.0 / 7.0 * Omega * (steps - steps / 2) * world.timeStep();
+  std::cout << "rolling: the velocity turned " << turn << " rad in the second half, 2 Omega / 7 t = " << rolling << " rad\n";
+  EXPECT_NEAR(turn / rolling, 1.0, 1e-3);
+  EXPECT_GT(ledger.bodies, 0.0);
+  EXPECT_GT(ledger.tangential, 0.0);
+  EXPECT_LT(worstResidual, 1e-3 * ledger.bodies);
+  EXPECT_EQ(world.statistics().detectorFailures, 0);
 }
 
 }  // namespace

@@ -1,5 +1,5 @@
-// Particle against one feature of a triangle mesh (detector.hpp, mesh_features.hpp). The mesh
-// is translated by `origin` (its body frame's origin in the world).
+// Particle against one feature of a triangle mesh (detector.hpp, mesh_features.hpp) whose body
+// frame is at poseB: the feature is placed in the world, its region tested in the body frame.
 //   face    the face's plane (closed form through the support map), kept when the touching
 //           point lies in the triangle and A's centre in front of the face;
 //   edge    the line through the edge (line_contact.hpp, radius 0), kept when the touching point
@@ -27,39 +27,42 @@ ContactGeometry elsewhere(int iterations) {
 
 }  // namespace
 
-ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const MeshFeatures& mesh, const Vec3& origin,
+ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const MeshFeatures& mesh, const Pose& poseB,
                               std::uint32_t feature, const DetectorSettings& settings, const WarmStart* previous) {
   const TriangleMesh& m = mesh.mesh();
   const std::uint32_t i = mesh.index(feature);
+  const Mat3 R = poseB.rotation();
+  const auto world = [&](std::uint32_t vertex) { return Vec3(poseB.position + R * m.vertices[vertex]); };
+  const auto body = [&](const Vec3& direction) { return Vec3(R.transpose() * direction); };
   ContactGeometry g;
   switch (mesh.kind(feature)) {
     case FeatureKind::Face: {
-      const Plane plane{origin + m.vertices[m.triangles[i][0]], mesh.faceNormal(i)};
+      const Plane plane{world(m.triangles[i][0]), R * mesh.faceNormal(i)};
       if ((poseA.position - plane.point).dot(plane.normal) <= 0.0) return elsewhere(0);  // behind the face
       g = detectContact(A, poseA, plane, settings);
-      if (g.converged() && !mesh.faceContains(i, g.pointB - origin)) return elsewhere(0);
+      if (g.converged() && !mesh.faceContains(i, poseB.toBody(g.pointB))) return elsewhere(0);
       break;
     }
     case FeatureKind::Edge: {
       const MeshFeatures::Edge& e = mesh.edge(i);
-      const Vec3 p = origin + m.vertices[e.vertex[0]], q = origin + m.vertices[e.vertex[1]];
+      const Vec3 p = world(e.vertex[0]), q = world(e.vertex[1]);
       const Vec3 along = (q - p).normalized();
       g = lineContact(A, poseA, Cylinder{p, along, 0.0}, settings, previous);
       if (!g.converged()) return g;
       const double station = (g.pointB - p).dot(along);
-      if (!(station > 0.0 && station < (q - p).norm()) || !mesh.edgeRegionContains(i, -g.normal)) {
+      if (!(station > 0.0 && station < (q - p).norm()) || !mesh.edgeRegionContains(i, body(-g.normal))) {
         return elsewhere(g.iterations);
       }
       g.curvatureB = PrincipalCurvatures::flat(-g.normal);
       break;
     }
     case FeatureKind::Vertex: {
-      g = detectContact(A, poseA, origin + m.vertices[i], settings, previous);
-      if (g.converged() && !mesh.vertexRegionContains(i, -g.normal)) return elsewhere(g.iterations);
+      g = detectContact(A, poseA, world(i), settings, previous);
+      if (g.converged() && !mesh.vertexRegionContains(i, body(-g.normal))) return elsewhere(g.iterations);
       break;
     }
   }
-  g.localPointB = g.pointB - origin;  // on the mesh, in its body frame
+  g.localPointB = poseB.toBody(g.pointB);  // on the mesh, in its body frame
   return g;
 }
 

@@ -57,7 +57,7 @@ ContactGeometry detect(const InteractionScene& scene, const std::vector<double>&
       image.point += s.shift[k];
       return detectContact(A, poseOf(p, a), image, settings, touched);
     } else {
-      return detectContact(A, poseOf(p, a), scene.meshes[wall.mesh], wall.origin, s.feature[k], settings, touched);
+      return detectContact(A, poseOf(p, a), scene.meshes[wall.mesh], wall.meshPose(), s.feature[k], settings, touched);
     }
   } else if constexpr (withWall(Kind)) {
     return detectContact(A, poseOf(p, a), scene.walls[b & ~wallFlag].plane, settings);

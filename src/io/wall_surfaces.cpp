@@ -83,10 +83,10 @@ void addCylinder(WallSurfaces& s, const Cylinder& c, std::uint32_t w, const Doma
 }
 
 
-/// The mesh's triangles where the wall has moved its origin.
-void addMesh(WallSurfaces& s, const TriangleMesh& mesh, const Vec3& origin, std::uint32_t w) {
+/// The mesh's triangles where the wall has moved it.
+void addMesh(WallSurfaces& s, const TriangleMesh& mesh, const Pose& pose, std::uint32_t w) {
   const auto first = static_cast<std::uint32_t>(s.points.size());
-  for (const Vec3& v : mesh.vertices) s.points.push_back(origin + v);
+  for (const Vec3& v : mesh.vertices) s.points.push_back(pose.toWorld(v));
   for (const auto& [i, j, k] : mesh.triangles) {
     s.polygons.push_back({first + i, first + j, first + k});
     s.wall.push_back(w);
@@ -102,7 +102,7 @@ WallSurfaces wallSurfaces(const std::vector<Wall>& walls, const std::vector<Mesh
     switch (walls[w].shape) {
       case WallShape::Plane: addPlane(s, walls[w].plane, w, box); break;
       case WallShape::Cylinder: addCylinder(s, walls[w].cylinder, w, box, segments); break;
-      case WallShape::Mesh: addMesh(s, meshes[walls[w].mesh].mesh(), walls[w].origin, w); break;
+      case WallShape::Mesh: addMesh(s, meshes[walls[w].mesh].mesh(), walls[w].meshPose(), w); break;
     }
   }
   return s;

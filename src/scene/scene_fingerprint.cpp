@@ -43,7 +43,7 @@ std::uint64_t sceneFingerprint(const Scene& scene) {
     for (const auto& [key, value] : i.lawParameters) h.all(key, value);
   }
   for (const WallSpec& w : scene.walls) {
-    h.all(h.n(static_cast<std::uint32_t>(w.shape)), w.point, w.normal, w.axis, w.radius, w.length, h.n(w.flatEnds), w.spin, w.velocity,
+    h.all(h.n(static_cast<std::uint32_t>(w.shape)), w.point, w.normal, w.axis, w.radius, w.length, h.n(w.flatEnds), w.angularVelocity, w.velocity,
           h.n(w.material));
     if (!w.mesh) continue;
     for (const Vec3& v : w.mesh->mesh().vertices) h(v);  // the mesh as read, repaired and scaled

@@ -475,10 +475,11 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
     if (!walls.IsSequence()) r.fail(walls, "walls", "must be a list");
     for (std::size_t k = 0; k < walls.size(); ++k) {
       const std::string where = "walls[" + std::to_string(k) + "]";
-      r.allowOnly(walls[k], where, {"point", "normal", "axis", "radius", "length", "ends", "spin", "mesh", "scale", "velocity", "material"});
+      r.allowOnly(walls[k], where, {"point", "normal", "axis", "radius", "length", "ends", "spin", "mesh", "scale", "angular_velocity", "velocity", "material"});
       WallSpec w;
       w.point = r.vector(walls[k], "point", where);
-      // A plane has a normal; a cylinder an axis, a radius and optionally a spin; a mesh a file.
+      // A plane has a normal; a cylinder an axis, a radius and optionally a spin; a mesh a file
+      // and optionally an angular velocity about its point.
       if (int(walls[k]["normal"].IsDefined()) + int(walls[k]["axis"].IsDefined()) + int(walls[k]["mesh"].IsDefined()) != 1) {
         r.fail(walls[k], where,
                "needs exactly one of normal [nx, ny, nz] (a plane), axis [ux, uy, uz] with radius (m) (a cylinder) or "
@@ -497,16 +498,21 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
         for (const char* key : {"radius", "length", "ends", "spin"}) {
           if (walls[k][key]) r.fail(walls[k][key], where + "." + key, "belongs to a cylinder (axis), not a mesh");
         }
+        if (walls[k]["angular_velocity"]) w.angularVelocity = r.vector(walls[k], "angular_velocity", where);
       } else if (walls[k]["normal"]) {
         w.normal = unit.normalized();
         for (const char* key : {"radius", "length", "ends", "spin"}) {
           if (walls[k][key]) r.fail(walls[k][key], where + "." + key, "belongs to a cylinder (axis), not a plane (normal)");
         }
+        if (walls[k]["angular_velocity"]) r.fail(walls[k]["angular_velocity"], where + ".angular_velocity", "belongs to a mesh; a plane does not rotate");
       } else {
+        if (walls[k]["angular_velocity"]) {
+          r.fail(walls[k]["angular_velocity"], where + ".angular_velocity", "belongs to a mesh; a cylinder turns about its axis by spin (rad/s)");
+        }
         w.shape = WallShape::Cylinder;
         w.axis = unit.normalized();
         w.radius = r.positive(walls[k], "radius", where, "m");
-        w.spin = r.number(walls[k], "spin", where, 0.0);
+        w.angularVelocity = r.number(walls[k], "spin", where, 0.0) * w.axis;
         if (walls[k]["length"]) w.length = r.positive(walls[k], "length", where, "m");
         if (const YAML::Node ends = walls[k]["ends"]) {
           const std::string kind = r.text(walls[k], "ends", where);

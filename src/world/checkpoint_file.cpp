@@ -13,7 +13,7 @@ namespace sqdem {
 namespace {
 
 constexpr char magic[8] = {'s', 'q', 'd', 'e', 'm', 'C', 'K', 'P'};
-constexpr std::uint32_t formatVersion = 9;
+constexpr std::uint32_t formatVersion = 10;
 constexpr std::size_t headerSize = sizeof magic + 4 + 8 + 8 + 8 + 4;
 constexpr std::uint64_t largestPayload = std::uint64_t{1} << 40;  // 1 TiB: anything larger is corrupt
 

@@ -24,8 +24,7 @@ void EnergyLedger::addStep(const World& world, const std::vector<Wall>& before) 
   drag += dt * world.viscousDamping() * twiceKinetic;
   for (std::size_t w = 0; w < before.size(); ++w) {
     const Wall& now = world.walls()[w];
-    const Vec3 spin = now.shape == WallShape::Cylinder ? Vec3(now.spin * now.cylinder.axis) : Vec3::Zero();
-    bodies -= 0.5 * dt * ((before[w].force + now.force).dot(now.velocity) + (before[w].torque + now.torque).dot(spin));
+    bodies -= 0.5 * dt * ((before[w].force + now.force).dot(now.velocity) + (before[w].torque + now.torque).dot(now.angularVelocity));
   }
   const ContactEnergy contacts = world.interactions().energy();
   normal += contacts.normal;

@@ -32,7 +32,7 @@ RunHealth::RunHealth(const World& world) {
 
 std::string RunHealth::afterStep(const World& world) {
   for (const Wall& w : world.walls()) {
-    wallWork_ += (std::abs(w.force.dot(w.velocity)) + std::abs(w.spin * w.torque.dot(w.cylinder.axis))) * world.timeStep();
+    wallWork_ += (std::abs(w.force.dot(w.velocity)) + std::abs(w.torque.dot(w.angularVelocity))) * world.timeStep();
   }
   if (++steps_ % checkEvery != 0) return {};
   char text[256];

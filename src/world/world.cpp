@@ -104,7 +104,7 @@ void World::addMeshCandidates(std::uint32_t i, std::uint32_t w, double reach, st
   const Wall& wall = walls_[w];
   const MeshFeatures& mesh = meshes_[wall.mesh];
   std::vector<std::uint32_t> features;
-  for (std::uint32_t t : meshTrees_[wall.mesh].trianglesNear(particles_.position[i] - wall.origin, reach)) {
+  for (std::uint32_t t : meshTrees_[wall.mesh].trianglesNear(wall.meshPose().toBody(particles_.position[i]), reach)) {
     features.push_back(t);
     for (int c = 0; c < 3; ++c) {
       const std::uint32_t e = mesh.faceEdges(t)[c], v = mesh.mesh().triangles[t][c];
@@ -184,7 +184,7 @@ void World::step() {
   for (std::size_t k = 0; k < walls_.size(); ++k) {
     Wall& w = walls_[k];
     if (w.servo) w.velocity = servoVelocity(k) * w.plane.normal;
-    w.translate(h * w.velocity);
+    w.advance(h);
   }
   time_ += h;
   timing_.integration += seconds(Clock::now() - start);

@@ -64,6 +64,7 @@ void World::readState(CheckpointReader& in) {
     requireIntact(w.material < materials_.size(), "wall material index");
     requireIntact(w.shape == WallShape::Plane || w.shape == WallShape::Cylinder || w.shape == WallShape::Mesh, "wall shape");
     requireIntact(w.shape != WallShape::Mesh || w.mesh < meshes_.size(), "wall mesh index");
+    requireIntact(std::abs(w.orientation.squaredNorm() - 1.0) < 1e-9, "wall orientation");
   }
   Interactions interactions = Interactions::readState(
       in, {restored, shapes_, boundingRadius, wallRecords, meshes_, models_, materials_.size(), neighbours_.skin(), dt_, detector_,

@@ -56,6 +56,10 @@ refused "mesh file not STL" "'walls\[0\].mesh': .*garbage.stl" \
   "$(variant mesh_garbage 's/{point: \[0, 0, 0\], normal: \[0, 0, 1\], material: glass}/{point: [0, 0, 0], mesh: garbage.stl, material: glass}/')"
 refused "mesh with a spin" "'walls\[0\].spin': belongs to a cylinder \(axis\), not a mesh" \
   "$(variant mesh_spin 's/{point: \[0, 0, 0\], normal: \[0, 0, 1\], material: glass}/{point: [0, 0, 0], mesh: tri.stl, spin: 3, material: glass}/')"
+refused "angular velocity on a plane" "'walls\[0\].angular_velocity': belongs to a mesh; a plane does not rotate" \
+  "$(variant plane_turn 's/{point: \[0, 0, 0\], normal: \[0, 0, 1\], material: glass}/{point: [0, 0, 0], normal: [0, 0, 1], angular_velocity: [0, 0, 1], material: glass}/')"
+refused "angular velocity on a cylinder" "'walls\[1\].angular_velocity': belongs to a mesh; a cylinder turns about its axis by spin" \
+  "$(variant cylinder_turn 's/{point: \[0, 0, 12.0e-3\], normal: \[0, 0, -1\], material: glass}/{point: [3.0e-3, 0, 12.0e-3], axis: [0, 1, 0], radius: 1.0e-3, angular_velocity: [0, 1, 0], material: glass}/')"
 refused "mesh and normal" "'walls\[0\]': needs exactly one of normal .* or mesh: file.stl" \
   "$(variant mesh_normal 's/{point: \[0, 0, 0\], normal: \[0, 0, 1\], material: glass}/{point: [0, 0, 0], normal: [0, 0, 1], mesh: tri.stl, material: glass}/')"
 refused "scale on a plane" "'walls\[0\].scale': belongs to a mesh wall" \

@@ -86,10 +86,10 @@ ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const Cy
 ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const Vec3& point,
                               const DetectorSettings& settings = {}, const WarmStart* previous = nullptr);
 
-/// Particle A against feature `feature` of a triangle mesh whose body frame is translated by
-/// origin (mesh_detector.cpp): Separated when that feature does not answer for the touch (the
-/// touch belongs to a neighbouring feature, or there is none). localPointB in the mesh's frame.
-ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const MeshFeatures& mesh, const Vec3& origin,
+/// Particle A against feature `feature` of a triangle mesh whose body frame is at poseB
+/// (mesh_detector.cpp): Separated when that feature does not answer for the touch (the touch
+/// belongs to a neighbouring feature, or there is none). localPointB in the mesh's frame.
+ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const MeshFeatures& mesh, const Pose& poseB,
                               std::uint32_t feature, const DetectorSettings& settings = {},
                               const WarmStart* previous = nullptr);
 

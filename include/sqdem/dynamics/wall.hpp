@@ -2,7 +2,7 @@
 // A wall: a kinematic body (DESIGN.md §2) whose surface is an infinite plane, the outside of a
 // cylinder (a roller) or a triangle mesh (an STL file: mesh_features.hpp, held by the World),
 // moved with a prescribed velocity or, a plane, under servo control; a cylinder may also spin
-// about its axis. The particles' forces and torques on it
+// about its axis and a mesh rotate about its origin. The particles' forces and torques on it
 // are summed in the interaction layer's reduction.
 
 #include <cstdint>
@@ -10,6 +10,7 @@
 
 #include "sqdem/geometry/cylinder.hpp"
 #include "sqdem/geometry/plane.hpp"
+#include "sqdem/geometry/pose.hpp"
 #include "sqdem/math/types.hpp"
 
 namespace sqdem {
@@ -32,7 +33,7 @@ struct WallServo {
 enum class WallShape : std::uint8_t {
   Plane,     ///< `plane`
   Cylinder,  ///< the outside of `cylinder`
-  Mesh,      ///< the World's mesh `mesh`, its body frame translated by `origin`
+  Mesh,      ///< the World's mesh `mesh`, its body frame at `origin` turned by `orientation`
 };
 
 /// A wall moving with a prescribed velocity or under servo control; `force` and `torque` are
@@ -47,28 +48,39 @@ struct Wall {
   std::optional<WallServo> servo;  ///< planes only
   WallShape shape = WallShape::Plane;
   Cylinder cylinder;             ///< the surface of a Cylinder wall
-  double spin = 0.0;             ///< a cylinder's angular velocity about its axis (rad/s, right-handed)
+  /// About its reference point (rad/s): along a cylinder's axis (its spin), any for a mesh,
+  /// zero for a plane.
+  Vec3 angularVelocity = Vec3::Zero();
   Vec3 torque = Vec3::Zero();    ///< about its reference point (N m), from the last force computation
   std::uint32_t mesh = 0;        ///< a Mesh wall's index among the World's meshes
   Vec3 origin = Vec3::Zero();    ///< a Mesh wall's body-frame origin in the world (m)
+  Quat orientation = Quat::Identity();  ///< a Mesh wall's body frame to the world
 
   /// The point its motion and torque refer to: the plane's point, the cylinder's axis point, or
   /// the mesh's origin.
   const Vec3& reference() const {
     return shape == WallShape::Plane ? plane.point : shape == WallShape::Cylinder ? cylinder.point : origin;
   }
-  /// Velocity of its surface at x (m/s): translation, and a cylinder's spin.
+  /// Where a Mesh wall's body frame is.
+  Pose meshPose() const { return {origin, orientation}; }
+  /// Velocity of its surface at x (m/s): translation and rotation.
   Vec3 surfaceVelocity(const Vec3& x) const {
-    return shape == WallShape::Cylinder ? Vec3(velocity + spin * cylinder.axis.cross(x - cylinder.point)) : velocity;
+    return shape == WallShape::Plane ? velocity : Vec3(velocity + angularVelocity.cross(x - reference()));
   }
   /// Signed distance of x from a plane's or a cylinder's surface, > 0 on the particles' side (m).
   double distance(const Vec3& x) const {
     return shape == WallShape::Plane ? (x - plane.point).dot(plane.normal) : cylinder.distance(x);
   }
-  void translate(const Vec3& displacement) {
-    if (shape == WallShape::Plane) plane.point += displacement;
-    else if (shape == WallShape::Cylinder) cylinder.point += displacement;
-    else origin += displacement;
+  /// Moves it over a step h: translation, and a mesh's rotation exp(omega h) about its origin
+  /// (a cylinder's spin leaves its surface where it is).
+  void advance(double h) {
+    if (shape == WallShape::Plane) plane.point += h * velocity;
+    else if (shape == WallShape::Cylinder) cylinder.point += h * velocity;
+    else {
+      origin += h * velocity;
+      const double angle = angularVelocity.norm() * h;
+      if (angle > 0.0) orientation = (Quat(Eigen::AngleAxisd(angle, angularVelocity.normalized())) * orientation).normalized();
+    }
   }
 };
 

@@ -56,7 +56,8 @@ struct InteractionSpec {
 };
 
 /// A wall: a plane (point, normal), a cylinder (point on the axis, axis, radius, spin) or a
-/// triangle mesh from an STL file (point: where the file's origin is placed).
+/// triangle mesh from an STL file (point: where the file's origin is placed; it may rotate
+/// about it).
 struct WallSpec {
   WallShape shape = WallShape::Plane;
   Vec3 point = Vec3::Zero(), normal = Vec3::UnitZ(), velocity = Vec3::Zero();
@@ -64,7 +65,7 @@ struct WallSpec {
   double radius = 0.0;        ///< (m, cylinder)
   double length = 0.0;        ///< of a finite cylinder's barrel between its ends (m; 0: infinite)
   bool flatEnds = false;      ///< a finite cylinder's ends: discs (`ends: flat`), not hemispheres
-  double spin = 0.0;          ///< angular velocity about the axis (rad/s, cylinder)
+  Vec3 angularVelocity = Vec3::Zero();  ///< about point (rad/s): spin x axis (cylinder), any (mesh)
   std::uint32_t material = 0;
   std::shared_ptr<const MeshFeatures> mesh;  ///< read, repaired and scaled to m at load (mesh walls)
 
@@ -78,7 +79,7 @@ struct WallSpec {
     w.cylinder = Cylinder{point, axis, radius};
     if (length > 0.0) w.cylinder.halfLength = 0.5 * length;
     w.cylinder.flatEnds = flatEnds;
-    w.spin = spin;
+    w.angularVelocity = angularVelocity;
     w.origin = point;  // Wall::mesh is set where the world takes the mesh (build_world.cpp)
     return w;
   }
