@@ -12,49 +12,13 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <random>
 #include <string>
 
+#include "dense_bed.hpp"
 #include "median.hpp"
 #include "sqdem/world/world.hpp"
 
 using namespace sqdem;
-
-namespace {
-
-struct Case {
-  const char* name;
-  Superquadric shape;
-  bool curvatures;  ///< elliptic Hertz on the curvatures, else volume-sphere Hertz
-};
-
-World denseBed(const Case& c, int edge, std::uint64_t seed) {
-  const Vec3 spacing = 2.0 * 0.995 * c.shape.halfExtents();
-  Domain domain;
-  domain.hi = edge * spacing;
-  domain.periodic = {true, true, true};
-  const Material m{1e7, 0.3, 1000.0, 0.3, 0.5};
-  World world({c.shape}, {m}, domain, 0.1 * c.shape.halfExtents().minCoeff());
-  ContactModel model = world.defaultContactModel(0, 0);
-  model.curvatures = c.curvatures;
-  world.setContactModel(0, 0, model);
-  std::mt19937_64 rng(seed);
-  std::normal_distribution<double> tilt(0.0, 0.02), speed(0.0, 0.01);
-  for (int i = 0; i < edge; ++i) {
-    for (int j = 0; j < edge; ++j) {
-      for (int k = 0; k < edge; ++k) {
-        const Vec3 axis(tilt(rng), tilt(rng), tilt(rng));
-        const Quat q = axis.norm() > 0 ? Quat(Eigen::AngleAxisd(axis.norm(), axis.normalized())) : Quat::Identity();
-        const std::size_t n = world.addParticle(0, 0, (Vec3(i, j, k) + Vec3::Constant(0.5)).cwiseProduct(spacing), q);
-        world.particles().velocity[n] = Vec3(speed(rng), speed(rng), speed(rng));
-      }
-    }
-  }
-  world.setTimeStep(0.2 * world.rayleighTimeStep());
-  return world;
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   const int edge = argc > 1 ? std::atoi(argv[1]) : 22;
