@@ -1,8 +1,9 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Thickness and solid fraction of a coating along x, from particle frames written by sqdem run
-(ASCII .vtu: position, semi_axes, quaternion), for scenes without a plate (the roll section).
+(<name>_particles_NNNNN.vtp: points, semi_axes, quaternion; read with VTK's Python, Debian's
+python3-vtk9), for scenes without a plate (the roll section).
 
-  scripts/coating_profile.py FIRST.vtu [MORE.vtu ...] LAST.vtu [--bins LO HI WIDTH] [--depth LY]
+  scripts/coating_profile.py FIRST.vtp [MORE.vtp ...] LAST.vtp [--bins LO HI WIDTH] [--depth LY]
 
 Per x bin (default 0 to 300 um in 25 um bins; m on the command line): the bed's top surface,
 the mean over a 10 um grid in y of the highest particle top in each cell (a particle's top is its
@@ -13,16 +14,20 @@ lowest over all frames (under the roll), in the last frame (after), springback (
 lowest and permanent compression (before - after) / before."""
 import argparse
 import math
-import re
+
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
 
 
 def arrays(path):
-    text = open(path).read()
-    out = {}
-    pattern = r'<DataArray type="\w+" Name="(\w+)" NumberOfComponents="(\d+)" format="ascii">(.*?)</DataArray>'
-    for m in re.finditer(pattern, text, re.S):
-        values, k = [float(t) for t in m.group(3).split()], int(m.group(2))
-        out[m.group(1)] = [values[i:i + k] for i in range(0, len(values), k)]
+    reader = vtkXMLPolyDataReader()
+    reader.SetFileName(path)
+    reader.Update()
+    data = reader.GetOutput()
+    point_data = data.GetPointData()
+    out = {'position': vtk_to_numpy(data.GetPoints().GetData()).tolist()}
+    for name in ('semi_axes', 'quaternion'):
+        out[name] = vtk_to_numpy(point_data.GetArray(name)).tolist()
     return out
 
 

@@ -3,144 +3,170 @@
 #include <cstdio>
 #include <sstream>
 
+#include "sqdem/geometry/superquadric_tessellation.hpp"
 #include "sqdem/io/atomic_file.hpp"
+#include "sqdem/io/poly_data.hpp"
+#include "sqdem/io/vtk_xml.hpp"
 #include "sqdem/io/wall_surfaces.hpp"
 #include "sqdem/world/packing_measures.hpp"
 
 namespace sqdem {
 namespace {
 
-template <typename Get>
-void dataArray(std::ostringstream& out, const char* type, const char* name, int components, std::size_t n, Get get) {
-  out << "        <DataArray type=\"" << type << "\" Name=\"" << name << "\" NumberOfComponents=\"" << components
-      << "\" format=\"ascii\">\n";
-  for (std::size_t i = 0; i < n; ++i) {
-    out << "         ";
-    get(out, i);
-    out << "\n";
+DataArray float64(const char* name, int components) { return {name, components, std::vector<double>{}}; }
+DataArray float32(const char* name, int components) { return {name, components, std::vector<float>{}}; }
+DataArray int64(const char* name) { return {name, 1, std::vector<std::int64_t>{}}; }
+DataArray int32(const char* name) { return {name, 1, std::vector<std::int32_t>{}}; }
+
+/// The particles' state, one vertex each.
+PolyData particleFrame(const World& world, const std::vector<int>& coordination) {
+  const ParticleStore& p = world.particles();
+  const auto& shapes = world.shapes();
+  PolyData d;
+  d.cells = PolyData::Cells::Vertices;
+  DataArray id = int64("id"), velocity = float64("velocity", 3), spin = float64("angular_velocity", 3),
+            force = float64("force", 3), torque = float64("torque", 3), quaternion = float64("quaternion", 4),
+            semiAxes = float64("semi_axes", 3), exponents = float64("exponents", 2), radius = float64("volume_radius", 1),
+            z = int32("coordination"), tensor = float64("shape_tensor", 9);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Superquadric& s = shapes[p.shape[i]];
+    const Quat& q = p.orientation[i];
+    d.points.push(p.position[i]);
+    d.connectivity.push_back(static_cast<std::int64_t>(i));
+    d.endCell();
+    id.push(static_cast<double>(p.id[i]));
+    velocity.push(p.velocity[i]);
+    spin.push(p.angularVelocity[i]);
+    force.push(p.force[i]);
+    torque.push(p.torque[i]);
+    for (const double c : {q.w(), q.x(), q.y(), q.z()}) quaternion.push(c);
+    semiAxes.push(s.halfExtents());
+    exponents.push(s.n1());
+    exponents.push(s.n2());
+    radius.push(s.volumeEquivalentRadius());
+    z.push(coordination[i]);
+    const Mat3 R = q.toRotationMatrix();
+    const Mat3 T = R * (2.0 * s.halfExtents()).asDiagonal() * R.transpose();
+    for (int k = 0; k < 9; ++k) tensor.push(T(k / 3, k % 3));
   }
-  out << "        </DataArray>\n";
+  d.pointData = {id, velocity, spin, force, torque, quaternion, semiAxes, exponents, radius, z, tensor};
+  d.pointScalars = "volume_radius";
+  return d;
 }
 
-void put(std::ostringstream& out, const Vec3& v) { out << ' ' << v.x() << ' ' << v.y() << ' ' << v.z(); }
+/// Every particle's surface in its pose, its values copied to its vertices.
+PolyData surfaceFrame(const World& world, const std::vector<int>& coordination, int resolution) {
+  const ParticleStore& p = world.particles();
+  std::vector<Tessellation> shapes;  // one per shape, in the body frame
+  for (const Superquadric& s : world.shapes()) shapes.push_back(tessellate(s, resolution));
+  PolyData d;
+  d.cells = PolyData::Cells::Polygons;
+  d.points = float32("Points", 3);
+  DataArray id = int64("id"), velocity = float32("velocity", 3), spin = float32("angular_velocity", 3),
+            force = float32("force", 3), z = int32("coordination"), radius = float32("volume_radius", 1);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Tessellation& t = shapes[p.shape[i]];
+    const auto first = static_cast<std::int64_t>(d.pointCount());
+    const Pose pose{p.position[i], p.orientation[i]};
+    const double r = world.shapes()[p.shape[i]].volumeEquivalentRadius();
+    for (const Vec3& x : t.points) {
+      d.points.push(pose.toWorld(x));
+      id.push(static_cast<double>(p.id[i]));
+      velocity.push(p.velocity[i]);
+      spin.push(p.angularVelocity[i]);
+      force.push(p.force[i]);
+      z.push(coordination[i]);
+      radius.push(r);
+    }
+    for (const auto& quad : t.quads) {
+      for (const std::uint32_t v : quad) d.connectivity.push_back(first + v);
+      d.endCell();
+    }
+  }
+  d.pointData = {id, velocity, spin, force, z, radius};
+  d.pointScalars = "volume_radius";
+  return d;
+}
 
-std::string frameName(const std::string& name, const char* kind, std::size_t frame, const char* extension) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "_%05zu", frame);
-  return name + "_" + kind + buffer + extension;
+/// One line per contact: between the centres, or from the centre to the point on a wall.
+PolyData contactFrame(const World& world) {
+  const ParticleStore& p = world.particles();
+  PolyData d;
+  d.cells = PolyData::Cells::Lines;
+  DataArray idA = int64("id_a"), idB = int64("id_b"), wall = int32("wall"), point = float64("point", 3),
+            normal = float64("normal", 3), normalForce = float64("normal_force", 1), normalVector = float64("normal_force_vector", 3), tangential = float64("tangential_force", 3),
+            overlap = float64("overlap", 1), area = float64("area", 1);
+  for (const ContactView c : world.contacts()) {
+    d.points.push(p.position[c.a()]);
+    d.points.push(c.onWall() ? c.point() : Vec3(p.position[c.b()] + c.shift()));
+    const auto n = static_cast<std::int64_t>(d.pointCount());
+    d.connectivity.insert(d.connectivity.end(), {n - 2, n - 1});
+    d.endCell();
+    idA.push(static_cast<double>(p.id[c.a()]));
+    idB.push(c.onWall() ? -1.0 : static_cast<double>(p.id[c.b()]));
+    wall.push(c.onWall() ? static_cast<double>(c.wall()) : -1.0);
+    point.push(c.point());
+    normal.push(c.normal());
+    normalForce.push(c.normalLoad().force);
+    const Vec3 along = c.force().dot(c.normal()) * c.normal();
+    normalVector.push(along);
+    tangential.push(c.force() - along);
+    overlap.push(c.overlap());
+    area.push(c.normalLoad().area);
+  }
+  d.cellData = {idA, idB, wall, point, normal, normalForce, normalVector, tangential, overlap, area};
+  d.cellScalars = "normal_force";
+  return d;
+}
+
+/// The walls' surfaces within the box.
+PolyData wallFrame(const World& world) {
+  const WallSurfaces s = wallSurfaces(world.walls(), world.meshes(), world.domain());
+  PolyData d;
+  d.cells = PolyData::Cells::Polygons;
+  for (const Vec3& x : s.points) d.points.push(x);
+  DataArray wall = int32("wall"), force = float64("force", 3), torque = float64("torque", 3), velocity = float64("velocity", 3);
+  for (std::size_t k = 0; k < s.polygons.size(); ++k) {
+    for (const std::uint32_t v : s.polygons[k]) d.connectivity.push_back(v);
+    d.endCell();
+    const Wall& w = world.walls()[s.wall[k]];
+    wall.push(s.wall[k]);
+    force.push(w.force);
+    torque.push(w.torque);
+    velocity.push(w.velocity);
+  }
+  d.cellData = {wall, force, torque, velocity};
+  d.cellScalars = "wall";
+  return d;
 }
 
 }  // namespace
 
-VtkSeries::VtkSeries(std::filesystem::path directory, std::string name, bool contacts)
-    : directory_(std::move(directory)), name_(std::move(name)), contacts_(contacts) {}
+VtkSeries::VtkSeries(std::filesystem::path directory, std::string name, VtkOutputOptions options)
+    : directory_(std::move(directory)), name_(std::move(name)), options_(options) {}
 
 void VtkSeries::writeFrame(const World& world) {
-  const ParticleStore& p = world.particles();
-  const std::size_t n = p.size();
   const std::vector<int> z = coordinationNumbers(world);
-  std::ostringstream out;
-  out.precision(9);
-  out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-      << "  <UnstructuredGrid>\n    <Piece NumberOfPoints=\"" << n << "\" NumberOfCells=\"" << n << "\">\n"
-      << "      <Points>\n";
-  dataArray(out, "Float64", "position", 3, n, [&](auto& o, std::size_t i) { put(o, p.position[i]); });
-  out << "      </Points>\n      <Cells>\n";
-  dataArray(out, "Int64", "connectivity", 1, n, [](auto& o, std::size_t i) { o << i; });
-  dataArray(out, "Int64", "offsets", 1, n, [](auto& o, std::size_t i) { o << i + 1; });
-  dataArray(out, "UInt8", "types", 1, n, [](auto& o, std::size_t) { o << 1; });  // VTK_VERTEX
-  out << "      </Cells>\n      <PointData Vectors=\"velocity\" Tensors=\"shape_tensor\">\n";
-  const auto& shapes = world.shapes();
-  dataArray(out, "Int64", "id", 1, n, [&](auto& o, std::size_t i) { o << p.id[i]; });
-  dataArray(out, "Float64", "velocity", 3, n, [&](auto& o, std::size_t i) { put(o, p.velocity[i]); });
-  dataArray(out, "Float64", "angular_velocity", 3, n, [&](auto& o, std::size_t i) { put(o, p.angularVelocity[i]); });
-  dataArray(out, "Float64", "force", 3, n, [&](auto& o, std::size_t i) { put(o, p.force[i]); });
-  dataArray(out, "Float64", "torque", 3, n, [&](auto& o, std::size_t i) { put(o, p.torque[i]); });
-  dataArray(out, "Float64", "quaternion", 4, n, [&](auto& o, std::size_t i) {
-    const Quat& q = p.orientation[i];
-    o << ' ' << q.w() << ' ' << q.x() << ' ' << q.y() << ' ' << q.z();
-  });
-  dataArray(out, "Float64", "semi_axes", 3, n, [&](auto& o, std::size_t i) { put(o, shapes[p.shape[i]].halfExtents()); });
-  dataArray(out, "Float64", "exponents", 2, n, [&](auto& o, std::size_t i) {
-    o << ' ' << shapes[p.shape[i]].n1() << ' ' << shapes[p.shape[i]].n2();
-  });
-  dataArray(out, "Float64", "volume_radius", 1, n, [&](auto& o, std::size_t i) { o << shapes[p.shape[i]].volumeEquivalentRadius(); });
-  dataArray(out, "Int32", "coordination", 1, n, [&](auto& o, std::size_t i) { o << z[i]; });
-  dataArray(out, "Float64", "shape_tensor", 9, n, [&](auto& o, std::size_t i) {
-    const Mat3 R = p.orientation[i].toRotationMatrix();
-    const Mat3 T = R * (2.0 * shapes[p.shape[i]].halfExtents()).asDiagonal() * R.transpose();
-    for (int k = 0; k < 9; ++k) o << ' ' << T(k / 3, k % 3);
-  });
-  out << "      </PointData>\n    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n";
-  const std::string particleFile = frameName(name_, "particles", particleFrames_.size(), ".vtu");
-  writeFileAtomically(directory_ / particleFile, out.str());
-  particleFrames_.emplace_back(world.time(), particleFile);
-  writeCollection("particles", particleFrames_);
-  if (!world.walls().empty()) writeWalls(world);
-  if (!contacts_) return;
-
-  std::vector<ContactView> pairs;
-  for (const ContactView c : world.contacts()) {
-    if (!c.onWall()) pairs.push_back(c);
-  }
-  const std::size_t m = pairs.size();
-  std::ostringstream net;
-  net.precision(9);
-  net << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-      << "  <PolyData>\n    <Piece NumberOfPoints=\"" << 2 * m << "\" NumberOfLines=\"" << m << "\">\n      <Points>\n";
-  dataArray(net, "Float64", "position", 3, 2 * m, [&](auto& o, std::size_t k) {
-    const ContactView& c = pairs[k / 2];
-    put(o, k % 2 == 0 ? p.position[c.a()] : Vec3(p.position[c.b()] + c.shift()));
-  });
-  net << "      </Points>\n      <Lines>\n";
-  dataArray(net, "Int64", "connectivity", 1, 2 * m, [](auto& o, std::size_t k) { o << k; });
-  dataArray(net, "Int64", "offsets", 1, m, [](auto& o, std::size_t k) { o << 2 * (k + 1); });
-  net << "      </Lines>\n      <CellData Scalars=\"normal_force\">\n";
-  dataArray(net, "Float64", "normal_force", 1, m, [&](auto& o, std::size_t k) { o << pairs[k].normalLoad().force; });
-  dataArray(net, "Float64", "overlap", 1, m, [&](auto& o, std::size_t k) { o << pairs[k].overlap(); });
-  dataArray(net, "Float64", "area", 1, m, [&](auto& o, std::size_t k) { o << pairs[k].normalLoad().area; });
-  net << "      </CellData>\n    </Piece>\n  </PolyData>\n</VTKFile>\n";
-  const std::string contactFile = frameName(name_, "contacts", contactFrames_.size(), ".vtp");
-  writeFileAtomically(directory_ / contactFile, net.str());
-  contactFrames_.emplace_back(world.time(), contactFile);
-  writeCollection("contacts", contactFrames_);
+  const double t = world.time();
+  write(particles_, t, vtkXml(particleFrame(world, z)));
+  if (options_.surfaceResolution > 0) write(surfaces_, t, vtkXml(surfaceFrame(world, z, options_.surfaceResolution)));
+  if (options_.contacts) write(contacts_, t, vtkXml(contactFrame(world)));
+  if (!world.walls().empty()) write(walls_, t, vtkXml(wallFrame(world)));
 }
 
-void VtkSeries::writeWalls(const World& world) {
-  const WallSurfaces s = wallSurfaces(world.walls(), world.meshes(), world.domain());
-  const std::size_t n = s.points.size(), m = s.polygons.size();
-  std::vector<std::uint32_t> connectivity, offsets;
-  for (const auto& polygon : s.polygons) {
-    connectivity.insert(connectivity.end(), polygon.begin(), polygon.end());
-    offsets.push_back(static_cast<std::uint32_t>(connectivity.size()));
-  }
-  std::ostringstream out;
-  out.precision(9);
-  out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-      << "  <PolyData>\n    <Piece NumberOfPoints=\"" << n << "\" NumberOfPolys=\"" << m << "\">\n      <Points>\n";
-  dataArray(out, "Float64", "position", 3, n, [&](auto& o, std::size_t k) { put(o, s.points[k]); });
-  out << "      </Points>\n      <Polys>\n";
-  dataArray(out, "Int64", "connectivity", 1, connectivity.size(), [&](auto& o, std::size_t k) { o << connectivity[k]; });
-  dataArray(out, "Int64", "offsets", 1, m, [&](auto& o, std::size_t k) { o << offsets[k]; });
-  out << "      </Polys>\n      <CellData Scalars=\"wall\">\n";
-  dataArray(out, "Int32", "wall", 1, m, [&](auto& o, std::size_t k) { o << s.wall[k]; });
-  dataArray(out, "Float64", "force", 3, m, [&](auto& o, std::size_t k) { put(o, world.walls()[s.wall[k]].force); });
-  out << "      </CellData>\n    </Piece>\n  </PolyData>\n</VTKFile>\n";
-  const std::string file = frameName(name_, "walls", wallFrames_.size(), ".vtp");
-  writeFileAtomically(directory_ / file, out.str());
-  wallFrames_.emplace_back(world.time(), file);
-  writeCollection("walls", wallFrames_);
-}
-
-void VtkSeries::writeCollection(const std::string& kind, const std::vector<std::pair<double, std::string>>& entries) const {
+void VtkSeries::write(Series& series, double time, const std::string& content) const {
+  char number[32];
+  std::snprintf(number, sizeof number, "_%05zu.vtp", series.frames.size());
+  const std::string file = name_ + "_" + series.kind + number;
+  writeFileAtomically(directory_ / file, content);
+  series.frames.emplace_back(time, file);
+  // The collection, by hand: VTK has no .pvd writer outside ParaView.
   std::ostringstream out;
   out.precision(12);
   out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n  <Collection>\n";
-  for (const auto& [time, file] : entries) {
-    out << "    <DataSet timestep=\"" << time << "\" part=\"0\" file=\"" << file << "\"/>\n";
-  }
+  for (const auto& [at, name] : series.frames) out << "    <DataSet timestep=\"" << at << "\" part=\"0\" file=\"" << name << "\"/>\n";
   out << "  </Collection>\n</VTKFile>\n";
-  writeFileAtomically(directory_ / (name_ + "_" + kind + ".pvd"), out.str());
+  writeFileAtomically(directory_ / (name_ + "_" + series.kind + ".pvd"), out.str());
 }
 
 }  // namespace sqdem

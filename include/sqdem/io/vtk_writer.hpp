@@ -1,18 +1,29 @@
 #pragma once
-// ParaView-ready VTK XML time series (ASCII): one `<name>_particles_NNNNN.vtu` per frame (vertex
-// cells at the particle centres) and, optionally, `<name>_contacts_NNNNN.vtp` (one line per
-// particle-particle contact) and, when there are walls, `<name>_walls_NNNNN.vtp` (their
-// surfaces within the box: io/wall_surfaces.hpp), each listed in `<name>_particles.pvd` /
-// `<name>_contacts.pvd` / `<name>_walls.pvd`.
-// Every file is written atomically; the .pvd is rewritten after each frame so it always lists
-// complete frames only.
+// ParaView-ready time series, written through VTK (vtk_xml.hpp: binary, zlib-compressed .vtp),
+// each frame's files listed in a .pvd collection:
+//   <name>_particles.pvd  one vertex per particle centre with its state (glyph users);
+//   <name>_surfaces.pvd   every particle's surface, tessellated in its pose (true shapes with no
+//                         recipe; resolution N = output.surface_resolution, 6 N^2 quads each,
+//                         geometry/superquadric_tessellation.hpp; 0: not written);
+//   <name>_contacts.pvd   one line per contact (output.contacts): between the two centres, or
+//                         from the centre to the contact point on a wall;
+//   <name>_walls.pvd      the walls' surfaces within the box (io/wall_surfaces.hpp).
+// Every file is written atomically; a .pvd is rewritten after each frame so it lists complete
+// frames only.
 //
 // Particle point data: id, velocity (m/s), angular_velocity (rad/s), force (N), torque (N m),
 // quaternion [w x y z] (body -> world), semi_axes (m), exponents [n1 n2], volume_radius (m),
-// coordination (particle-particle contacts), and shape_tensor = R diag(2a, 2b, 2c) R^T: ParaView's
-// Tensor Glyph filter with its default sphere (radius 0.5) and "extract eigenvalues" draws each
-// particle's ellipsoid. Contact cell data: normal_force (N), overlap (m), area (m^2). Wall cell
-// data: wall (its index in the scene), force (N, what the particles exert on it).
+// coordination (particle-particle contacts), and shape_tensor = R diag(2a, 2b, 2c) R^T, which a
+// Tensor Glyph with its default sphere (radius 0.5), eigenvalues extracted and Scale Factor 1
+// draws as the particle's ellipsoid.
+// Surface point data (Float32, each particle's values on its vertices): id, velocity,
+// angular_velocity, force, coordination, volume_radius.
+// Contact cell data: id_a, id_b (particle ids; id_b = -1 on a wall), wall (its index, -1 between
+// particles), point (m), normal (unit, from A to B), normal_force (N, > 0 compressive),
+// normal_force_vector, tangential_force (N, acting on B; A receives the opposite),
+// overlap (m, < 0 a gap), area (m^2).
+// Wall cell data: wall (its index in the scene), force (N, what the particles exert on it),
+// torque (N m, about its reference point), velocity (m/s).
 
 #include <filesystem>
 #include <string>
@@ -22,19 +33,27 @@
 
 namespace sqdem {
 
+struct VtkOutputOptions {
+  bool contacts = true;
+  int surfaceResolution = 8;  ///< N of the particles' surfaces; 0: not written
+};
+
 class VtkSeries {
  public:
-  VtkSeries(std::filesystem::path directory, std::string name, bool contacts);
+  VtkSeries(std::filesystem::path directory, std::string name, VtkOutputOptions options);
   void writeFrame(const World& world);
 
  private:
-  void writeWalls(const World& world);
-  void writeCollection(const std::string& kind, const std::vector<std::pair<double, std::string>>& entries) const;
+  struct Series {
+    const char* kind;
+    std::vector<std::pair<double, std::string>> frames;
+  };
+  void write(Series& series, double time, const std::string& content) const;
 
   std::filesystem::path directory_;
   std::string name_;
-  bool contacts_;
-  std::vector<std::pair<double, std::string>> particleFrames_, contactFrames_, wallFrames_;
+  VtkOutputOptions options_;
+  Series particles_{"particles", {}}, surfaces_{"surfaces", {}}, contacts_{"contacts", {}}, walls_{"walls", {}};
 };
 
 }  // namespace sqdem
