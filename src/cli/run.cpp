@@ -114,10 +114,9 @@ void printSummary(const World& world, const RunReport& report, double wall, cons
   if (m.betweenWallsFraction > 0.0) std::printf("final: solid fraction between the walls %.4f\n", m.betweenWallsFraction);
   std::printf("final: largest overlap %.3g of the smaller volume radius; %.1f %% of the contacts yielded\n",
               m.largestOverlapRatio, 100.0 * m.yieldedFraction);
-  std::printf("ParaView: open %s and %s", (output.directory / (output.name + "_particles.pvd")).string().c_str(),
-              (output.directory / (output.name + "_contacts.pvd")).string().c_str());
-  if (!world.walls().empty()) std::printf(", the walls %s", (output.directory / (output.name + "_walls.pvd")).string().c_str());
-  std::printf("\n");
+  std::printf("ParaView: paraview --script=%s (the particles in their shapes, the walls, the contacts; or open the "
+              "series %s_{particles,surfaces,contacts,walls}.pvd)\n",
+              (output.directory / (output.name + "_view.py")).string().c_str(), (output.directory / output.name).string().c_str());
   if (!report.finalParticles.empty()) {
     std::printf("final state: %s (a particle file: insert it into a scene with insert: [{file: ...}])\n",
                 report.finalParticles.string().c_str());

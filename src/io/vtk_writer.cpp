@@ -5,6 +5,7 @@
 
 #include "sqdem/geometry/superquadric_tessellation.hpp"
 #include "sqdem/io/atomic_file.hpp"
+#include "sqdem/io/paraview_script.hpp"
 #include "sqdem/io/poly_data.hpp"
 #include "sqdem/io/vtk_xml.hpp"
 #include "sqdem/io/wall_surfaces.hpp"
@@ -148,6 +149,9 @@ VtkSeries::VtkSeries(std::filesystem::path directory, std::string name, VtkOutpu
 void VtkSeries::writeFrame(const World& world) {
   const std::vector<int> z = coordinationNumbers(world);
   const double t = world.time();
+  if (particles_.frames.empty()) {
+    writeParaViewScript(directory_, name_, {options_.surfaceResolution > 0, options_.contacts, !world.walls().empty()});
+  }
   write(particles_, t, vtkXml(particleFrame(world, z)));
   if (options_.surfaceResolution > 0) write(surfaces_, t, vtkXml(surfaceFrame(world, z, options_.surfaceResolution)));
   if (options_.contacts) write(contacts_, t, vtkXml(contactFrame(world)));

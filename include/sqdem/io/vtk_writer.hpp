@@ -8,6 +8,7 @@
 //   <name>_contacts.pvd   one line per contact (output.contacts): between the two centres, or
 //                         from the centre to the contact point on a wall;
 //   <name>_walls.pvd      the walls' surfaces within the box (io/wall_surfaces.hpp).
+// With the first frame, <name>_view.py (paraview_script.hpp) opens them in ParaView.
 // Every file is written atomically; a .pvd is rewritten after each frame so it lists complete
 // frames only.
 //
