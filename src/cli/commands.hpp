@@ -13,5 +13,6 @@ int geometryProbe(const Arguments& args);
 int stickingVelocity(const Arguments& args);
 int contactDriver(const Arguments& args);
 int runCommand(const Arguments& args);
+int plotCommand(const Arguments& args);
 
 }  // namespace sqdem::cli

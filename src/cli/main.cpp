@@ -19,8 +19,8 @@ struct Command {
 constexpr Command commands[] = {
     {"run", R"(  run <scene.yaml> [--threads N] [--out DIR] [--overwrite] [--resume CHECKPOINT]
                          Run a DEM scene (YAML; keys in README.md "Scene files"): builds the
-                         particles, runs the stages, writes ParaView files (.pvd/.vtu/.vtp), a
-                         CSV log and a checkpoint after every stage to DIR (default
+                         particles, runs the stages, writes ParaView files (.pvd/.vtp and a
+                         view script), a CSV log and its plot and a checkpoint after every stage to DIR (default
                          out/<scene name>), prints a summary. --threads: OpenMP threads
                          (default: OMP_NUM_THREADS if set, otherwise one per core; results do
                          not depend on it). --overwrite: replace an earlier run's files in DIR
@@ -28,6 +28,13 @@ constexpr Command commands[] = {
                          checkpoint of the same scene with its remaining stages.
 )",
      sqdem::cli::runCommand},
+    {"plot", R"(  plot <log.csv>         Plot a run's CSV log (written by run, which also plots it at its end):
+                         kinetic energy, solid fractions, mean coordination and the plane
+                         walls' pressures against time (with a pressing plate also its pressure
+                         against the solid fraction) to <log>_run.png next to it, through
+                         gnuplot; the script <log>_run.gp is kept for restyling.
+)",
+     sqdem::cli::plotCommand},
     {"validate", R"(  validate table1        Reproduce Table 1 of the review (Kildashti et al. 2023, seed 004):
                          normalised elliptic Hertz force of two n = 6 superquadrics in three
                          poses, against the review's accurate model, FEM and simplified model.

@@ -14,9 +14,12 @@
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
+#include <regex>
 
 #include "commands.hpp"
 #include "sqdem/scene/build_world.hpp"
+#include "sqdem/io/run_plot.hpp"
 #include "sqdem/scene/output_directory.hpp"
 #include "sqdem/scene/scene_loader.hpp"
 #include "sqdem/scene/stage_runner.hpp"
@@ -131,6 +134,8 @@ void printSummary(const World& world, const RunReport& report, double wall, cons
     std::printf("compression curve: %s%s\n", (output.directory / (output.name + "_compression.csv")).string().c_str(),
                 report.compressionPlot ? (", plot " + report.compressionPlot->string()).c_str() : " (no plot: gnuplot not found)");
   }
+  const std::optional<fs::path> plot = plotRun(report.log);
+  std::printf("run plot: %s\n", plot ? plot->string().c_str() : "none (gnuplot not found)");
 }
 
 int runScene(const std::string& scenePath, fs::path outDir, int threads, const std::string& resume, bool overwrite) {
@@ -145,6 +150,11 @@ int runScene(const std::string& scenePath, fs::path outDir, int threads, const s
   }
   if (threads > 0) omp_set_num_threads(threads);
   const std::string stem = fs::path(scenePath).stem().string();
+  // The scene file's name names the output files and goes into their plot scripts.
+  if (!std::regex_match(stem, std::regex("[A-Za-z0-9_][A-Za-z0-9_.-]{0,99}"))) {
+    throw SceneError(scenePath + ": the scene file's name (less .yaml) names the output files: it must be 1-100 letters, "
+                     "digits, '_', '.', '-', not starting with '.' or '-'");
+  }
   RunOutput output{outDir.empty() ? fs::path("out") / stem : outDir,
                    resume.empty() ? stem : stem + "_from_step" + std::to_string(start.totalSteps)};
   prepareOutputDirectory(output.directory, output.name, resume.empty(), overwrite);

@@ -39,7 +39,7 @@ std::optional<std::filesystem::path> CompressionRecord::write(const std::filesys
   const std::string data = name + "_compression";
   std::ostringstream csv;
   csv.precision(12);
-  csv << "time,plate_gap,plate_pressure,porosity,branch\n";
+  csv << "time_s,plate_gap_m,plate_pressure_Pa,porosity,branch\n";
   const std::size_t top = samples_.empty() ? 0 : peak();
   for (std::size_t k = 0; k < samples_.size(); ++k) {
     const auto& [time, plate] = samples_[k];

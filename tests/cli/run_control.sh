@@ -9,6 +9,19 @@ a="$scratch/a"
 check "uninterrupted run" "$sqdem" run "$scene" --out "$a" > "$scratch/a.log"
 final=$(tail -1 "$a/small_bed.csv")
 
+# The log's columns carry their units; the run plotted it, and `sqdem plot` plots it again.
+check "CSV header with units" grep -q "^time_s,step,stage,kinetic_energy_J,contacts,mean_coordination,solid_fraction,between_walls_solid_fraction,bed_height_m,.*,wall0_z_m,wall0_fx_N,wall0_fy_N,wall0_fz_N,wall0_p_Pa," "$a/small_bed.csv"
+check "the run wrote its plot" test -s "$a/small_bed_run.png"
+rm "$a/small_bed_run.png"
+expect_output "sqdem plot" "small_bed_run.png" "$sqdem" plot "$a/small_bed.csv"
+check "sqdem plot wrote the PNG" test -s "$a/small_bed_run.png"
+expect_error "plot of a file that is not a run log" 1 "is not an sqdem run log" "$sqdem" plot "$a/small_bed_final_particles.csv"
+cp "$a/small_bed.csv" "$scratch/it's.csv"
+expect_error "plot of a log with a quote in its name" 1 "the log's file name must be letters, digits" "$sqdem" plot "$scratch/it's.csv"
+cp "$scene" "$scratch/bad name.yaml"
+expect_error "a scene file name that cannot name files" 1 "the scene file's name .* must be 1-100 letters" "$sqdem" run "$scratch/bad name.yaml" --out "$scratch/bad"
+check "nothing written for it" test ! -e "$scratch/bad"
+
 # The final state as a particle file, and a scene that starts from it (a packed bed).
 check "final particle file: header and 120 rows" awk -F, 'NR == 1 { ok = ($1 == "material" && NF == 19) } END { exit !(ok && NR == 121) }' \
   "$a/small_bed_final_particles.csv"

@@ -1,15 +1,19 @@
 #pragma once
 // The CSV log of a run, one row written and flushed at a time (an interrupted run keeps its
-// rows). Columns: time (s), step, stage, kinetic_energy (J), contacts, mean_coordination,
-// solid_fraction, bed_height (m), detector_failures, stress_xx ... stress_yz (Pa, Love-Weber,
-// packing_measures.hpp), and per wall the force the particles exert on it, fx, fy, fz (N),
-// after its position: a plane's z (m); a cylinder's axis point x, y, z (m), followed by the
-// torque about that point tx, ty, tz (N m); yielded_fraction and largest_overlap_ratio
-// (packing_measures.hpp); with a pressing plate (scene/compression_report.hpp) plate_gap (m),
-// plate_pressure (Pa) and porosity (-). With an energy ledger (world/energy_ledger.hpp),
-// its terms since the start, all in J: work_bodies, work_gravity, elastic_energy (U now),
-// plastic_dissipation, damping_dissipation, tangential_dissipation, drag_dissipation and
-// energy_residual.
+// rows). Each column's name ends with its unit (_s, _J, _m, _N, _Nm, _Pa; none: a count or a
+// ratio): time_s, step, stage, kinetic_energy_J, contacts, mean_coordination, solid_fraction,
+// between_walls_solid_fraction (0 without a floor and a lid), bed_height_m,
+// detector_failures, stress_xx_Pa ... stress_yz_Pa (Love-Weber, packing_measures.hpp), and per
+// wall k the force the particles exert on it, wallk_fx_N, _fy_N, _fz_N, after its position: a
+// plane's z (wallk_z_m), and for a plane along a coordinate axis its pressure wallk_p_Pa (the
+// normal force over the box's cross-section, > 0 compressive); a cylinder's axis point or a
+// mesh's origin x, y, z, followed by the
+// torque about that point wallk_tx_Nm, _ty_Nm, _tz_Nm; yielded_fraction and
+// largest_overlap_ratio (packing_measures.hpp); with a pressing plate
+// (scene/compression_report.hpp) plate_gap_m, plate_pressure_Pa and porosity. With an energy
+// ledger (world/energy_ledger.hpp), its terms since the start: work_bodies_J, work_gravity_J,
+// elastic_energy_J (U now), plastic_dissipation_J, damping_dissipation_J,
+// tangential_dissipation_J, drag_dissipation_J and energy_residual_J.
 
 #include <filesystem>
 #include <fstream>
