@@ -17,7 +17,7 @@ struct Command {
 };
 
 constexpr Command commands[] = {
-    {"run", R"(  run <scene.yaml> [--threads N] [--out DIR] [--overwrite] [--resume CHECKPOINT]
+    {"run", R"(  run <scene.yaml> [--threads N] [--out DIR] [--overwrite] [--resume CHECKPOINT] [--progress-every S]
                          Run a DEM scene (YAML; keys in README.md "Scene files"): builds the
                          particles, runs the stages, writes ParaView files (.pvd/.vtp and a
                          view script), a CSV log and its plot and a checkpoint after every stage to DIR (default
@@ -25,7 +25,9 @@ constexpr Command commands[] = {
                          (default: OMP_NUM_THREADS if set, otherwise one per core; results do
                          not depend on it). --overwrite: replace an earlier run's files in DIR
                          (without it, a DIR holding them is an error). --resume continues a
-                         checkpoint of the same scene with its remaining stages.
+                         checkpoint of the same scene with its remaining stages. Progress: a
+                         line on a terminal; otherwise a 'progress:' record every S seconds
+                         (default 60; 0: none) for following a batch job's log.
 )",
      sqdem::cli::runCommand},
     {"plot", R"(  plot <log.csv>         Plot a run's CSV log (written by run, which also plots it at its end):

@@ -1,16 +1,14 @@
-// `sqdem run scene.yaml [--threads N] [--out DIR] [--overwrite] [--resume CHECKPOINT]`: the
+// `sqdem run scene.yaml [--threads N] [--out DIR] [--overwrite] [--resume CHECKPOINT] [--progress-every S]`: the
 // command around the scene layer (scene/): parses the arguments, loads and builds the scene,
 // plans the run (stage lengths, time step), restores a checkpoint, prepares DIR (default
 // out/<scene name>; scene/output_directory.hpp), runs the stages (scene/stage_runner.hpp) and
-// prints: a progress line on a terminal, a line per stage, a summary. SIGINT/SIGTERM ask the
+// prints progress (progress_printer.hpp), a line per stage, a summary. SIGINT/SIGTERM ask the
 // runner to stop after the current step with a checkpoint (exit 130); numerical trouble exits 3;
 // bad input 1; bad usage 2. A resumed run writes `<name>_from_step<N>_*`.
 
 #include <omp.h>
-#include <unistd.h>
 
 #include <algorithm>
-#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
@@ -18,6 +16,7 @@
 #include <regex>
 
 #include "commands.hpp"
+#include "progress_printer.hpp"
 #include "sqdem/scene/build_world.hpp"
 #include "sqdem/io/run_plot.hpp"
 #include "sqdem/scene/output_directory.hpp"
@@ -29,55 +28,9 @@ namespace sqdem::cli {
 namespace {
 
 namespace fs = std::filesystem;
-using Clock = std::chrono::steady_clock;
 
 volatile std::sig_atomic_t stopSignal = 0;
 extern "C" void requestStop(int signal) { stopSignal = signal; }
-
-double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
-
-/// Prints a progress line on a terminal (twice a second) and a line at each stage's end.
-class Printer : public RunObserver {
- public:
-  explicit Printer(const Scene& scene) : scene_(scene), terminal_(isatty(fileno(stderr))) {}
-
-  void stepped(const StageSpec& stage, long step, long steps, const World& world) override {
-    ++steps_;
-    const auto now = Clock::now();
-    if (!terminal_ || seconds(now - last_) <= 0.5) return;
-    last_ = now;
-    const double rate = steps_ / seconds(now - start_);
-    std::fprintf(stderr, "\r[%s] %5.1f %%  t = %.4g s  %.0f steps/s  ETA %.0f s   ", stage.name.c_str(),
-                 100.0 * step / steps, world.time(), rate, (steps - step) / rate);
-  }
-
-  void stageEnded(const StageSpec& stage, const std::string& reason, const World& world) override {
-    clearLine();
-    const PackingMeasures m = measurePacking(world);
-    std::printf("stage '%s': t = %.4g s, %s; solid fraction %.4f, mean coordination %.3f, E_kin %.3g J",
-                stage.name.c_str(), world.time(), reason.c_str(), m.solidFraction, m.meanCoordination,
-                world.kineticEnergy());
-    if (stage.kineticEnergyRatio > 0.0) {
-      std::printf(" (ratio %.3g)", kineticEnergyRatio(world, scene_.gravity, stage.velocityScale));
-    } else if (scene_.gravity.norm() > 0.0) {
-      std::printf(" (ratio %.3g)", kineticEnergyRatio(world, scene_.gravity, 0.0));
-    }
-    std::printf("\n");
-    if (m.betweenWallsFraction > 0.0) std::printf("  solid fraction between the walls %.4f\n", m.betweenWallsFraction);
-    std::fflush(stdout);
-  }
-
-  void clearLine() const {
-    if (terminal_) std::fprintf(stderr, "\r%80s\r", "");
-  }
-  double elapsed() const { return seconds(Clock::now() - start_); }
-
- private:
-  const Scene& scene_;
-  bool terminal_;
-  long steps_ = 0;
-  Clock::time_point start_ = Clock::now(), last_ = start_;
-};
 
 void printSummary(const World& world, const RunReport& report, double wall, const RunOutput& output) {
   const ContactStatistics& st = world.statistics();
@@ -138,7 +91,8 @@ void printSummary(const World& world, const RunReport& report, double wall, cons
   std::printf("run plot: %s\n", plot ? plot->string().c_str() : "none (gnuplot not found)");
 }
 
-int runScene(const std::string& scenePath, fs::path outDir, int threads, const std::string& resume, bool overwrite) {
+int runScene(const std::string& scenePath, fs::path outDir, int threads, const std::string& resume, bool overwrite,
+             double progressEvery) {
   const Scene scene = loadScene(scenePath);  // everything is validated before anything runs
   World world = buildWorld(scene);
   const RunPlan plan = planRun(scene, world);
@@ -171,7 +125,7 @@ int runScene(const std::string& scenePath, fs::path outDir, int threads, const s
   stopSignal = 0;
   std::signal(SIGINT, requestStop);
   std::signal(SIGTERM, requestStop);
-  Printer printer(scene);
+  ProgressPrinter printer(scene, progressEvery);
   const RunReport report = runStages(scene, world, plan, start, output, printer, stopSignal);
   printer.clearLine();
   switch (report.outcome) {
@@ -200,11 +154,13 @@ int runScene(const std::string& scenePath, fs::path outDir, int threads, const s
 }  // namespace
 
 int runCommand(const Arguments& args) {
-  const char* usage = "usage: sqdem run scene.yaml [--threads N] [--out DIR] [--overwrite] [--resume CHECKPOINT]\n";
+  const char* usage =
+      "usage: sqdem run scene.yaml [--threads N] [--out DIR] [--overwrite] [--resume CHECKPOINT] [--progress-every S]\n";
   std::string scene;
   fs::path outDir;
   std::string resume;
   int threads = 0;
+  double progressEvery = 60.0;
   bool overwrite = false;
   std::vector<std::string> given;
   for (std::size_t i = 0; i < args.size(); ++i) {
@@ -216,7 +172,7 @@ int runCommand(const Arguments& args) {
       }
       given.push_back(a);
     }
-    if ((a == "--threads" || a == "--out" || a == "--resume") && i + 1 == args.size()) {
+    if ((a == "--threads" || a == "--out" || a == "--resume" || a == "--progress-every") && i + 1 == args.size()) {
       std::fprintf(stderr, "sqdem run: '%s' needs a value\n%s", a.c_str(), usage);
       return 2;
     }
@@ -229,6 +185,14 @@ int runCommand(const Arguments& args) {
         return 2;
       }
       threads = static_cast<int>(n);
+    } else if (a == "--progress-every") {
+      const std::string v = args[++i];
+      char* end = nullptr;
+      progressEvery = std::strtod(v.c_str(), &end);
+      if (v.empty() || *end != '\0' || !(progressEvery >= 0.0 && progressEvery <= 1e6)) {
+        std::fprintf(stderr, "sqdem run: --progress-every = '%s': expected seconds in [0, 1e6] (0: no records)\n", v.c_str());
+        return 2;
+      }
     } else if (a == "--out") {
       outDir = args[++i];
     } else if (a == "--resume") {
@@ -247,7 +211,7 @@ int runCommand(const Arguments& args) {
     return 2;
   }
   try {
-    return runScene(scene, outDir, threads, resume, overwrite);
+    return runScene(scene, outDir, threads, resume, overwrite, progressEvery);
   } catch (const SceneError& e) {
     std::fprintf(stderr, "sqdem run: %s\n", e.what());
     return 1;

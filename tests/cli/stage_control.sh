@@ -22,6 +22,13 @@ expect_error "kinetic_energy_ratio without gravity or velocity_scale" 1 \
 sed 's/stop: {kinetic_energy_ratio: 1.0e-3}/stop: {kinetic_energy_ratio: 1.0e-3, velocity_scale: 0.1}/' "$scratch/nograv.yaml" > "$scratch/vscale.yaml"
 "$sqdem" run "$scratch/vscale.yaml" --out "$scratch/vs" > "$scratch/vs.log" 2>&1
 check "velocity_scale stops the resting bed at once" grep -q "stage 'pour': t = .*kinetic energy ratio below" "$scratch/vs.log"
+# Progress records (stdout is not a terminal here): a stage with a stop criterion shows the
+# watched quantity against its target, not a percentage.
+sed 's/    duration: 0.06/    duration: 0.2\n    stop: {kinetic_energy_ratio: 1.0e-3}/; s/duration: 0.02/duration: 0.002/' "$base" > "$scratch/ke.yaml"
+"$sqdem" run "$scratch/ke.yaml" --out "$scratch/ke" --progress-every 0.2 > "$scratch/ke.log" 2>&1
+check "progress records watch the stop quantity" grep -Eq "^progress: \[pour\] t = .* E_kin ratio [0-9.e+-]+, stops below 0.001; [0-9]+ steps/s" "$scratch/ke.log"
+check "no percentage for a stage with a stop" sh -c "! grep -q '^progress: \[pour\] .*%' '$scratch/ke.log'"
+expect_error "--progress-every -1" 2 "--progress-every = '-1': expected seconds in \[0, 1e6\]" "$sqdem" run "$base" --progress-every -1
 # A porosity stop: the lid's press ends when the bed's porosity between floor and lid (1 -
 # particle volume / (box cross-section x gap)) reaches 0.875 (0.89 where the lid starts); the CSV's porosity column (with
 # output.compression) is above it before the last row and at or below it there.
