@@ -37,7 +37,7 @@ constexpr Command commands[] = {
                          gnuplot; the script <log>_run.gp is kept for restyling.
 )",
      sqdem::cli::plotCommand},
-    {"validate", R"(  validate table1        Reproduce Table 1 of the review (Kildashti et al. 2023, seed 004):
+    {"validate", R"(  validate table1        Reproduce Table 1 of the review (Kildashti et al. 2023):
                          normalised elliptic Hertz force of two n = 6 superquadrics in three
                          poses, against the review's accurate model, FEM and simplified model.
                          Exit code 1 if sqdem is more than 0.3 % from the accurate model.
@@ -52,7 +52,7 @@ constexpr Command commands[] = {
                     --wall-youngs-modulus EW --wall-poisson-ratio NUW
                     --work-of-adhesion W --yield-pressure PY
                          Critical velocities (m/s) of a sphere hitting a flat wall under Nan et
-                         al.'s elasto-plastic adhesive law (seed 000, Eqs. 73-79; SI units):
+                         al.'s elasto-plastic adhesive law (2022, Eqs. 73-79; SI units):
                          prints {"V_s", "V_y0", "V_y", "V_ys"} as one JSON object.
 )",
      sqdem::cli::stickingVelocity},

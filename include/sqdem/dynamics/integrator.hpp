@@ -1,6 +1,6 @@
 #pragma once
-// Velocity Verlet for translation and NO_SQUISH for rotation (Miller, Eleftheriou, Nicholls,
-// Arnold & Bhatt, J. Chem. Phys. 116, 8649 (2002); the scheme LAMMPS uses for aspherical
+// Velocity Verlet for translation and NO_SQUISH for rotation (Miller et al., J. Chem. Phys. 116,
+// 8649 (2002); the scheme LAMMPS uses for aspherical
 // bodies). Both are symplectic and time-reversible. One step of length h:
 //
 //   kick(h/2):  v += h/2 F/m;   p += h/2 · 2 q ⊗ (0, τ_body)           (Miller Eq. 2.12)
