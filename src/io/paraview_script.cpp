@@ -45,13 +45,16 @@ if CONTACTS:
     contacts = Show(series('contacts'), view)
     ColorBy(contacts, ('CELLS', 'normal_force'))
     contacts.LineWidth = 2.0
-    contacts.SetScalarBarVisibility(view, True)
 
 scene = GetAnimationScene()
 scene.UpdateAnimationUsingDataTimeSteps()
-times = particles.TimestepValues
-scene.AnimationTime = times[-1] if isinstance(times, (list, tuple)) else times
+scene.GoToLast()
 shown.RescaleTransferFunctionToDataRange(False, True)
+if CONTACTS:
+    contacts.RescaleTransferFunctionToDataRange(False, True)
+bar = GetScalarBar(shown.LookupTable, view)
+bar.Title = 'coordination'
+bar.ComponentTitle = ''
 
 # Camera: from the front-left, a little above, the whole scene in view.
 (x0, x1, y0, y1, z0, z1) = particles.GetDataInformation().GetBounds()
@@ -64,7 +67,7 @@ ResetCamera(view)
 Render(view)
 
 if '--png' in sys.argv:
-    SaveScreenshot(sys.argv[sys.argv.index('--png') + 1], view, ImageResolution=[1280, 960])
+    SaveScreenshot(sys.argv[sys.argv.index('--png') + 1], view, ImageResolution=[1280, 960], FontScaling='Do not scale fonts')
 )";
   const auto replace = [&text](const std::string& key, const std::string& value) {
     for (std::size_t at = text.find(key); at != std::string::npos; at = text.find(key, at + value.size())) {
