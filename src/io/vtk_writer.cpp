@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <sstream>
+#include <utility>
 
 #include "sqdem/geometry/superquadric_tessellation.hpp"
 #include "sqdem/io/atomic_file.hpp"
@@ -18,6 +19,13 @@ DataArray float64(const char* name, int components) { return {name, components, 
 DataArray float32(const char* name, int components) { return {name, components, std::vector<float>{}}; }
 DataArray int64(const char* name) { return {name, 1, std::vector<std::int64_t>{}}; }
 DataArray int32(const char* name) { return {name, 1, std::vector<std::int32_t>{}}; }
+
+/// Moves the filled arrays into a frame's point or cell data (a frame of 10^5 surfaces holds
+/// arrays of 10^7 values: not to be copied).
+template <typename... Arrays>
+void keep(std::vector<DataArray>& data, Arrays&&... arrays) {
+  (data.push_back(std::move(arrays)), ...);
+}
 
 /// The particles' state, one vertex each.
 PolyData particleFrame(const World& world, const std::vector<int>& coordination) {
@@ -50,7 +58,7 @@ PolyData particleFrame(const World& world, const std::vector<int>& coordination)
     const Mat3 T = R * (2.0 * s.halfExtents()).asDiagonal() * R.transpose();
     for (int k = 0; k < 9; ++k) tensor.push(T(k / 3, k % 3));
   }
-  d.pointData = {id, velocity, spin, force, torque, quaternion, semiAxes, exponents, radius, z, tensor};
+  keep(d.pointData, id, velocity, spin, force, torque, quaternion, semiAxes, exponents, radius, z, tensor);
   d.pointScalars = "volume_radius";
   return d;
 }
@@ -84,7 +92,7 @@ PolyData surfaceFrame(const World& world, const std::vector<int>& coordination, 
       d.endCell();
     }
   }
-  d.pointData = {id, velocity, spin, force, z, radius};
+  keep(d.pointData, id, velocity, spin, force, z, radius);
   d.pointScalars = "volume_radius";
   return d;
 }
@@ -115,7 +123,7 @@ PolyData contactFrame(const World& world) {
     overlap.push(c.overlap());
     area.push(c.normalLoad().area);
   }
-  d.cellData = {idA, idB, wall, point, normal, normalForce, normalVector, tangential, overlap, area};
+  keep(d.cellData, idA, idB, wall, point, normal, normalForce, normalVector, tangential, overlap, area);
   d.cellScalars = "normal_force";
   return d;
 }
@@ -136,7 +144,7 @@ PolyData wallFrame(const World& world) {
     torque.push(w.torque);
     velocity.push(w.velocity);
   }
-  d.cellData = {wall, force, torque, velocity};
+  keep(d.cellData, wall, force, torque, velocity);
   d.cellScalars = "wall";
   return d;
 }
