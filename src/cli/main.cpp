@@ -18,10 +18,10 @@ struct Command {
 
 constexpr Command commands[] = {
     {"run", R"(  run <scene.yaml> [--threads N] [--out DIR] [--overwrite] [--resume CHECKPOINT] [--progress-every S]
-                         Run a DEM scene (YAML; keys in README.md "Scene files"): builds the
-                         particles, runs the stages, writes ParaView files (.pvd/.vtp and a
-                         view script), a CSV log and its plot and a checkpoint after every stage to DIR (default
-                         out/<scene name>), prints a summary. --threads: OpenMP threads
+                         Run a DEM scene (YAML; keys in docs/scene_reference.md): builds the
+                         particles, runs the stages, writes to DIR (default out/<scene name>;
+                         docs/output.md) ParaView series (.pvd/.vtp) and a view script, a CSV
+                         log and its plot, a checkpoint after every stage; prints a summary. --threads: OpenMP threads
                          (default: OMP_NUM_THREADS if set, otherwise one per core; results do
                          not depend on it). --overwrite: replace an earlier run's files in DIR
                          (without it, a DIR holding them is an error). --resume continues a
