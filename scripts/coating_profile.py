@@ -15,7 +15,6 @@ lowest and permanent compression (before - after) / before."""
 import argparse
 import math
 
-from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
 
 
@@ -24,10 +23,10 @@ def arrays(path):
     reader.SetFileName(path)
     reader.Update()
     data = reader.GetOutput()
-    point_data = data.GetPointData()
-    out = {'position': vtk_to_numpy(data.GetPoints().GetData()).tolist()}
+    tuples = lambda array: [array.GetTuple(i) for i in range(array.GetNumberOfTuples())]
+    out = {'position': tuples(data.GetPoints().GetData())}
     for name in ('semi_axes', 'quaternion'):
-        out[name] = vtk_to_numpy(point_data.GetArray(name)).tolist()
+        out[name] = tuples(data.GetPointData().GetArray(name))
     return out
 
 

@@ -15,7 +15,6 @@ import os
 import sys
 import xml.etree.ElementTree as ElementTree
 
-from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkLookupTable, vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkPolyData
 from vtkmodules.vtkFiltersCore import vtkMassProperties, vtkTensorGlyph, vtkTriangleFilter
@@ -82,9 +81,10 @@ def render(directory, name, picture):
     writer.SetFileName(picture)
     writer.SetInputConnection(grab.GetOutputPort())
     writer.Write()
-    pixels = vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars())[:, :3]
-    drawn = (pixels != 255).any(axis=1).mean()
-    colours = len({tuple(p) for p in pixels[::7]})
+    image = grab.GetOutput().GetPointData().GetScalars()  # RGB(A) bytes per pixel
+    pixels = [image.GetTuple(i)[:3] for i in range(image.GetNumberOfTuples())]
+    drawn = sum(p != (255.0, 255.0, 255.0) for p in pixels) / len(pixels)
+    colours = len(set(pixels[::7]))
     print('%s: %d x %d, %.1f %% of the pixels drawn, %d colours' % (picture, 800, 600, 100 * drawn, colours))
     return drawn > 0.03 and colours > 20
 
@@ -118,12 +118,12 @@ def glyph_volume(tensor):
 def glyph_volumes(directory, name):
     particles = last_frame(directory, name, 'particles')
     data = particles.GetPointData()
-    exponents, semi = vtk_to_numpy(data.GetArray('exponents')), vtk_to_numpy(data.GetArray('semi_axes'))
-    tensors = data.GetArray('shape_tensor')
+    exponents, semi, tensors = data.GetArray('exponents'), data.GetArray('semi_axes'), data.GetArray('shape_tensor')
     worst, count = 0.0, 0
     for i in range(particles.GetNumberOfPoints()):
-        if exponents[i][0] == 2 and exponents[i][1] == 2:
-            expected = 4.0 / 3.0 * math.pi * semi[i][0] * semi[i][1] * semi[i][2]
+        if exponents.GetTuple(i) == (2.0, 2.0):
+            a, b, c = semi.GetTuple(i)
+            expected = 4.0 / 3.0 * math.pi * a * b * c
             worst = max(worst, abs(glyph_volume(tensors.GetTuple(i)) / expected - 1.0))
             count += 1
     print('Tensor Glyph at Scale Factor 1: %d ellipsoids, glyph volumes within %.2f %% of the particles\'' % (count, 100 * worst))
