@@ -679,7 +679,9 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
     scene.output.frames = static_cast<std::size_t>(r.integer(out, "frames", "output", 0.0, 1e5, 20.0));
     scene.output.logEvery = static_cast<std::size_t>(r.integer(out, "log_every", "output", 0.0, 1e12, 0.0));
     scene.output.contacts = r.flag(out, "contacts", "output", true);
-    scene.output.surfaceResolution = static_cast<int>(r.integer(out, "surface_resolution", "output", 0.0, 64.0, 8.0));
+    if (out["surface_resolution"]) {
+      scene.output.surfaceResolution = static_cast<int>(r.integer(out, "surface_resolution", "output", 0.0, 64.0, 8.0));
+    }
     scene.output.checkpointSteps = static_cast<std::uint64_t>(r.integer(out, "checkpoint_every_steps", "output", 0.0, 1e12, 0.0));
     scene.output.checkpointMinutes = r.number(out, "checkpoint_every_minutes", "output", scene.output.checkpointMinutes);
     if (!(scene.output.checkpointMinutes >= 0.0)) {

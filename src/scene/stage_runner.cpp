@@ -57,6 +57,14 @@ RunPlan planRun(const Scene& scene, const World& world) {
     plan.warnings.push_back(std::string(text) + "; the run may be unstable");
   }
   for (std::size_t k = 0; k < scene.stages.size(); ++k) plan.stageSteps.push_back(stageSteps(scene, k, dt));
+  const std::size_t n = world.particles().size();
+  plan.surfaceResolution = scene.output.surfaceResolution.value_or(n <= surfacesByDefaultUpTo ? defaultSurfaceResolution : 0);
+  if (!scene.output.surfaceResolution && plan.surfaceResolution == 0) {
+    std::snprintf(text, sizeof text, "%zu particles: their surfaces are not drawn by default above %zu (set "
+                  "output.surface_resolution N to draw them, 6 N^2 quads each per frame); the centres are written as always", n,
+                  surfacesByDefaultUpTo);
+    plan.warnings.emplace_back(text);
+  }
   // A domain the particles fill to less than 1e-6 is most likely a unit slip (domain in m,
   // shapes in um): it runs (the cell grid adapts), but the user is told.
   double volume = 0.0;
@@ -83,7 +91,7 @@ double kineticEnergyRatio(const World& world, const Vec3& gravity, double veloci
 RunReport runStages(const Scene& scene, World& world, const RunPlan& plan, const RunProgress& start,
                     const RunOutput& output, RunObserver& observer, const volatile std::sig_atomic_t& stop) {
   const bool fresh = start.totalSteps == 0 && start.stage == 0 && start.stepInStage == 0;
-  VtkSeries vtk(output.directory, output.name, {scene.output.contacts, scene.output.surfaceResolution});
+  VtkSeries vtk(output.directory, output.name, {scene.output.contacts, plan.surfaceResolution});
   RunLog log(output.directory / (output.name + ".csv"), world, scene.output.compressionWall);
   std::optional<CompressionRecord> compression;
   if (scene.output.compressionWall) compression.emplace();

@@ -18,6 +18,14 @@ check "sqdem plot wrote the PNG" test -s "$a/small_bed_run.png"
 expect_error "plot of a file that is not a run log" 1 "is not an sqdem run log" "$sqdem" plot "$a/small_bed_final_particles.csv"
 cp "$a/small_bed.csv" "$scratch/it's.csv"
 expect_error "plot of a log with a quote in its name" 1 "the log's file name must be letters, digits" "$sqdem" plot "$scratch/it's.csv"
+# Particle surfaces: drawn by default up to 20,000 particles; above, not unless asked, and the
+# run says so.
+sed -e 's/count: 120,/count: 20001,/' -e 's/volume_radius: \[0.4e-3, 0.5e-3\]/volume_radius: 0.04e-3/' -e 's/duration: 0.06/duration: 1.0e-5/' \
+  -e 's/duration: 0.02/duration: 1.0e-5/' "$scene" > "$scratch/many.yaml"
+expect_output "no surfaces above 20,000 particles by default" "20001 particles: their surfaces are not drawn by default above 20000" \
+  "$sqdem" run "$scratch/many.yaml" --out "$scratch/many"
+check "... and none written" test ! -e "$scratch/many/many_surfaces.pvd"
+check "a small bed's surfaces are written" test -s "$a/small_bed_surfaces.pvd"
 cp "$scene" "$scratch/bad name.yaml"
 expect_error "a scene file name that cannot name files" 1 "the scene file's name .* must be 1-100 letters" "$sqdem" run "$scratch/bad name.yaml" --out "$scratch/bad"
 check "nothing written for it" test ! -e "$scratch/bad"

@@ -36,7 +36,7 @@ namespace sqdem {
 
 struct VtkOutputOptions {
   bool contacts = true;
-  int surfaceResolution = 8;  ///< N of the particles' surfaces; 0: not written
+  int surfaceResolution = 0;  ///< N of the particles' surfaces; 0: not written
 };
 
 class VtkSeries {

@@ -131,7 +131,8 @@ struct OutputSpec {
   std::size_t frames = 20;      ///< VTK frames per stage (plus the initial state)
   std::size_t logEvery = 0;     ///< CSV row every N steps (0: 200 rows per stage)
   bool contacts = true;         ///< write the contact network (.vtp)
-  int surfaceResolution = 8;    ///< particles' surfaces drawn with 6 N^2 quads each (0: not written)
+  /// Particles' surfaces drawn with 6 N^2 quads each (0: not written); unset: planRun decides.
+  std::optional<int> surfaceResolution;
   std::uint64_t checkpointSteps = 0;  ///< also write <name>_latest.checkpoint every N steps (0: off)
   double checkpointMinutes = 10.0;    ///< ... and every M wall-clock minutes (0: off)
   bool energy = false;          ///< keep an energy ledger (world/energy_ledger.hpp) and log it

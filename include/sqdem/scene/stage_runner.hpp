@@ -34,7 +34,13 @@ struct RunPlan {
   std::vector<long> stageSteps;       ///< steps of each stage at the world's time step
   double rayleighTime = 0.0;          ///< of the smallest particle, with reduced stiffness (s)
   std::vector<std::string> warnings;  ///< for the user, before the run
+  int surfaceResolution = 0;          ///< of the particles' surfaces in the output (0: none)
 };
+
+/// Particles' surfaces are drawn by default up to this many particles (6 N^2 quads each per
+/// frame: at 10^5 particles and N = 3 a frame takes 10 s and 91 MB, docs/performance.md).
+inline constexpr std::size_t surfacesByDefaultUpTo = 20000;
+inline constexpr int defaultSurfaceResolution = 8;
 
 /// Throws SceneError naming the file and key when a stage or the time step is impossible.
 RunPlan planRun(const Scene& scene, const World& world);
