@@ -1,6 +1,5 @@
 #include "sqdem/io/run_log.hpp"
 
-#include <cmath>
 #include <stdexcept>
 
 #include "sqdem/world/packing_measures.hpp"
@@ -8,17 +7,10 @@
 namespace sqdem {
 namespace {
 
-/// The box's cross-section a plane wall along a coordinate axis presses on (m^2); nothing for
-/// other walls.
-std::optional<double> planeArea(const Wall& w, const Domain& box) {
-  if (w.shape != WallShape::Plane) return std::nullopt;
-  for (int axis = 0; axis < 3; ++axis) {
-    if (std::abs(w.plane.normal[axis]) == 1.0) {
-      const Vec3 extent = box.hi - box.lo;
-      return extent[(axis + 1) % 3] * extent[(axis + 2) % 3];
-    }
-  }
-  return std::nullopt;
+/// A plane wall along a coordinate axis: it has a pressure column (its normal force over the
+/// box's cross-section, World::wallArea).
+bool alongAnAxis(const Wall& w) {
+  return w.shape == WallShape::Plane && w.plane.normal.cwiseAbs().maxCoeff() == 1.0;
 }
 
 }  // namespace
@@ -34,7 +26,7 @@ RunLog::RunLog(const std::filesystem::path& path, const World& world, std::optio
     const std::string name = ",wall" + std::to_string(w);
     if (walls[w].shape != WallShape::Plane) out_ << name << "_x_m" << name << "_y_m";
     out_ << name << "_z_m" << name << "_fx_N" << name << "_fy_N" << name << "_fz_N";
-    if (planeArea(walls[w], world.domain())) out_ << name << "_p_Pa";
+    if (alongAnAxis(walls[w])) out_ << name << "_p_Pa";
     if (walls[w].shape != WallShape::Plane) out_ << name << "_tx_Nm" << name << "_ty_Nm" << name << "_tz_Nm";
   }
   out_ << ",yielded_fraction,largest_overlap_ratio";
@@ -52,11 +44,12 @@ std::optional<PlateMeasures> RunLog::row(const World& world, long step, const st
        << ',' << m.meanCoordination << ',' << m.solidFraction << ',' << m.betweenWallsFraction << ',' << m.bedHeight << ','
        << world.statistics().detectorFailures;
   for (const auto& [i, j] : {std::pair{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}}) out_ << ',' << m.stress(i, j);
-  for (const Wall& w : world.walls()) {
+  for (std::size_t k = 0; k < world.walls().size(); ++k) {
+    const Wall& w = world.walls()[k];
     const Vec3& x = w.reference();
     if (w.shape != WallShape::Plane) out_ << ',' << x.x() << ',' << x.y();
     out_ << ',' << x.z() << ',' << w.force.x() << ',' << w.force.y() << ',' << w.force.z();
-    if (const std::optional<double> area = planeArea(w, world.domain())) out_ << ',' << -w.force.dot(w.plane.normal) / *area;
+    if (alongAnAxis(w)) out_ << ',' << -w.force.dot(w.plane.normal) / world.wallArea(k);
     if (w.shape != WallShape::Plane) out_ << ',' << w.torque.x() << ',' << w.torque.y() << ',' << w.torque.z();
   }
   out_ << ',' << m.yieldedFraction << ',' << m.largestOverlapRatio;
