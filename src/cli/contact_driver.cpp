@@ -22,6 +22,7 @@
 #include "sqdem/contact/detector.hpp"
 #include "sqdem/io/atomic_file.hpp"
 #include "sqdem/io/gnuplot.hpp"
+#include "sqdem/io/plain_name.hpp"
 #include "sqdem/mechanics/mindlin_deresiewicz.hpp"
 
 namespace sqdem::cli {
@@ -234,7 +235,7 @@ int runContact(const std::string& inputPath, const fs::path& outDir, bool allowD
     name = input["name"].get<std::string>();
   }
   const std::regex safe("[A-Za-z0-9_.-]+");
-  if (!std::regex_match(name, safe) || name.front() == '.' || name.front() == '-') {
+  if (!isPlainName(name)) {
     throw InputError("'name' may contain only letters, digits, '_', '.', '-' and may not start with '.' or '-'");
   }
   const std::string title = readTitle(input, name);

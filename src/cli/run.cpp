@@ -13,11 +13,11 @@
 #include <cstdio>
 #include <filesystem>
 #include <optional>
-#include <regex>
 
 #include "commands.hpp"
 #include "progress_printer.hpp"
 #include "sqdem/scene/build_world.hpp"
+#include "sqdem/io/plain_name.hpp"
 #include "sqdem/io/run_plot.hpp"
 #include "sqdem/scene/output_directory.hpp"
 #include "sqdem/scene/scene_loader.hpp"
@@ -105,7 +105,7 @@ int runScene(const std::string& scenePath, fs::path outDir, int threads, const s
   if (threads > 0) omp_set_num_threads(threads);
   const std::string stem = fs::path(scenePath).stem().string();
   // The scene file's name names the output files and goes into their plot scripts.
-  if (!std::regex_match(stem, std::regex("[A-Za-z0-9_][A-Za-z0-9_.-]{0,99}"))) {
+  if (!isPlainName(stem, 100)) {
     throw SceneError(scenePath + ": the scene file's name (less .yaml) names the output files: it must be 1-100 letters, "
                      "digits, '_', '.', '-', not starting with '.' or '-'");
   }

@@ -4,10 +4,10 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <regex>
 #include <stdexcept>
 
 #include "sqdem/io/atomic_file.hpp"
+#include "sqdem/io/plain_name.hpp"
 
 namespace sqdem {
 namespace {
@@ -40,8 +40,7 @@ std::string gnuplotPreamble(const std::string& name, int width, int height) {
 std::optional<std::filesystem::path> plotPng(const std::filesystem::path& directory, const std::string& name,
                                              const std::string& script) {
   // The name is in the script as text: only a plain file name may get there.
-  static const std::regex plain("[A-Za-z0-9_][A-Za-z0-9_.-]*");
-  if (!std::regex_match(name, plain)) throw std::runtime_error("'" + name + "': a plot's name must be letters, digits, _ . -");
+  if (!isPlainName(name)) throw std::runtime_error("'" + name + "': a plot's name must be letters, digits, _ . -");
   writeFileAtomically(directory / (name + ".gp"), script);
   const std::string temporary = name + ".png.tmp";
   const int status = runGnuplot(directory, name + ".gp", temporary);

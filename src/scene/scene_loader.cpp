@@ -19,6 +19,8 @@
 #include "sqdem/scene/particle_file.hpp"
 #include "sqdem/scene/scene_loader.hpp"
 
+#include "sqdem/io/plain_name.hpp"
+
 namespace sqdem {
 namespace {
 
@@ -604,8 +606,7 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
     StageSpec spec;
     spec.name = st["name"] ? r.text(st, "name", where) : "stage" + std::to_string(k);
     // Stage names go into CSV rows and file names.
-    static const std::regex safeName("[A-Za-z0-9_][A-Za-z0-9_.-]{0,63}");
-    if (!std::regex_match(spec.name, safeName)) {
+    if (!isPlainName(spec.name, 64)) {
       r.fail(st["name"], where + ".name", "must be 1-64 letters, digits, '_', '.', '-', not starting with '.' or '-'");
     }
     for (const StageSpec& other : scene.stages) {
