@@ -19,8 +19,8 @@ ProgressPrinter::ProgressPrinter(const Scene& scene, double recordEvery)
 void ProgressPrinter::stepped(const StageSpec& stage, long step, long steps, const World& world) {
   ++steps_;
   const auto now = Clock::now();
-  if (terminal_ ? seconds(now - lastLine_) <= 0.5 : recordEvery_ <= 0.0 || seconds(now - lastRecord_) < recordEvery_) return;
-  lastLine_ = lastRecord_ = now;
+  if (terminal_ ? seconds(now - lastPrint_) <= 0.5 : recordEvery_ <= 0.0 || seconds(now - lastPrint_) < recordEvery_) return;
+  lastPrint_ = now;
   recent_.emplace_back(now, steps_);
   while (recent_.size() > 2 && seconds(now - recent_[1].first) >= 5.0) recent_.pop_front();
   if (terminal_) {

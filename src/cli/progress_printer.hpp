@@ -34,7 +34,7 @@ class ProgressPrinter : public RunObserver {
   bool terminal_;
   double recordEvery_;
   long steps_ = 0;
-  Clock::time_point start_ = Clock::now(), lastLine_ = start_, lastRecord_ = start_;
+  Clock::time_point start_ = Clock::now(), lastPrint_ = start_;
   std::deque<std::pair<Clock::time_point, long>> recent_;  ///< (when, steps) samples over the last 5 s
 };
 

@@ -70,9 +70,7 @@ if '--png' in sys.argv:
     SaveScreenshot(sys.argv[sys.argv.index('--png') + 1], view, ImageResolution=[1280, 960], FontScaling='Do not scale fonts')
 )";
   const auto replace = [&text](const std::string& key, const std::string& value) {
-    for (std::size_t at = text.find(key); at != std::string::npos; at = text.find(key, at + value.size())) {
-      text.replace(at, key.size(), value);
-    }
+    text.replace(text.find(key), key.size(), value);  // each key once, in the text above
   };
   replace("@SURFACES", flag(series.surfaces));
   replace("@CONTACTS", flag(series.contacts));
