@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "pair_surfaces.hpp"
+#include "penetration_depth.hpp"
 #include "pivoted_lu.hpp"
 #include "sqdem/geometry/oriented_box.hpp"
 
@@ -302,6 +303,30 @@ bool settled(const ContactGeometry& g) {
   return g.status == ContactStatus::Converged || g.status == ContactStatus::Separated;
 }
 
+/// The side check (detector.hpp): an overlapping answer's points lie inside or on the other
+/// body, a separated answer's outside or on it, to `sideSlack` in gauge units (a relative
+/// distance; a solve to tolerance misplaces them by ~1e-10).
+constexpr double sideSlack = 1e-7;
+bool pointsOnTheirSides(const PairFrame& f, const ContactGeometry& g) {
+  const double inB = f.B.gauge(f.toB(g.localPointA)) - 1.0;
+  const double inA = f.A.gauge(f.fromB(g.localPointB)) - 1.0;
+  return g.overlap >= 0.0 ? std::max(inA, inB) <= sideSlack : std::min(inA, inB) >= -sideSlack;
+}
+
+/// A stationary pair that is not the contact: not converged, no overlap.
+ContactGeometry notTheContact(ContactGeometry g) {
+  g.status = ContactStatus::WrongBranch;
+  g.overlap = 0.0;
+  return g;
+}
+
+/// An answer of a pair solved before continues the last one when its overlap moved by at most
+/// 1e-2 L (a stable step moves a particle by ~1e-4 of its size); otherwise it is new and checked.
+bool continues(const PairFrame& f, const ContactGeometry& g, const WarmStart* previous) {
+  constexpr double overlapJump = 1e-2;
+  return previous != nullptr && std::abs(g.overlap - previous->overlap) <= overlapJump * f.lengthScale;
+}
+
 /// Starting directions of the global stage: the line of centres, the body axes of A and B and
 /// A's diagonals (both signs), ordered by their support gap, smallest (deepest) first.
 std::vector<SupportPair> rankedStarts(const PairFrame& f) {
@@ -335,17 +360,79 @@ SupportPair globalSupportMinimum(const PairFrame& f, int& iterations) {
   return *best;  // rankedStarts is never empty
 }
 
+/// The least penetration is found to this fraction of L (EPA's tolerance): of two common-normal
+/// pairs whose overlaps differ by less, the first found is reported.
+constexpr double leastPenetrationTolerance = 1e-8;
+
+/// Global stage (detector.hpp: which pair is reported), for overlapping answers, answers that
+/// failed the side check and none. With EPA's bounds of the least penetration
+/// (penetration_depth.hpp): an answer at the lower bound stands; otherwise the descent from EPA's
+/// normal is polished and kept when shallower. Without the bounds (the bodies do not overlap, or
+/// EPA's start was flat), or with no answer yet: descents from the ranked starts, those that
+/// undercut a believed answer or else the four best, the shallowest kept. The answer is believed
+/// within EPA's bounds, or without them when it passes the side check; otherwise it is not the
+/// contact.
+/// A later answer replaces an earlier only when shallower by more than the tolerance, so a pair
+/// found twice keeps its first bits.
+template <class Polish>
+ContactGeometry leastPenetration(const PairFrame& f, ContactGeometry best, const Polish& polish) {
+  const double tolerance = leastPenetrationTolerance * f.lengthScale;
+  int iterations = best.iterations;
+  const auto keepShallower = [&](const ContactGeometry& g) {
+    iterations = g.iterations;
+    if (settled(g) && (!settled(best) || g.overlap < best.overlap - tolerance)) best = g;
+  };
+  const std::optional<detail::Penetration> epa = detail::penetrationDepth(f, leastPenetrationTolerance);
+  // Every common-normal pair's overlap lies between EPA's lower bound and, for the least
+  // penetration, its upper bound.
+  const auto withinBounds = [&](const ContactGeometry& g) {
+    return g.overlap >= epa->lowerBound - tolerance && g.overlap <= epa->upperBound + tolerance;
+  };
+  if (epa) {
+    iterations += epa->iterations;
+    if (!settled(best) || best.overlap > epa->lowerBound + tolerance) {
+      keepShallower(polish(minimiseSupportGap(f, epa->normal, 1e-7, 400), iterations));
+    }
+  }
+  if (!epa || !settled(best)) {
+    constexpr int globalStarts = 4;
+    int tried = 0;
+    for (const SupportPair& start : rankedStarts(f)) {
+      const bool believed = settled(best) && (epa ? withinBounds(best) : pointsOnTheirSides(f, best));
+      if (believed ? start.gap >= best.overlap - tolerance : tried == globalStarts) break;
+      ++tried;
+      keepShallower(polish(minimiseSupportGap(f, start.normal, 1e-7, 400), iterations));
+    }
+  }
+  if (settled(best) && !(epa ? withinBounds(best) : pointsOnTheirSides(f, best))) best = notTheContact(best);
+  best.iterations = iterations;
+  return best;
+}
+
+/// Below this overlap a common-normal pair is the least penetration (detector.hpp): the smallest
+/// principal radius of curvature of A plus B's, known for ellipsoids (c^2 / a, at the ends of
+/// the longest axis), taken as 0 for other exponents.
+double uniqueMinimumReach(const PairFrame& f) {
+  const auto leastRadius = [](const Superquadric& s) {
+    const Vec3& e = s.halfExtents();
+    return s.isEllipsoid() ? e.minCoeff() * e.minCoeff() / e.maxCoeff() : 0.0;
+  };
+  return leastRadius(f.A) + leastRadius(f.B);
+}
+
 /// A pair the common-normal model cannot describe: coincident centres, or a centre inside the
 /// other body.
 bool degenerate(const PairFrame& f) {
   return f.c.norm() <= 1e-9 * f.lengthScale || f.A.gauge(f.c) < 1.0 || f.B.gauge(f.toB(Vec3::Zero())) < 1.0;
 }
 
-/// Cold solve from startNormal: support-gap descent then Newton; a longer descent; then the
-/// global stage (descents from the best-ranked starting directions, each polished by Newton).
+/// Cold solve from startNormal (of a new pair, or of a warm one whose Newton did not settle):
+/// support-gap descent then Newton; a longer descent if that did not settle. A separated answer
+/// that passes the side check stands, and an overlapping one below the unique-minimum reach or
+/// continuing the pair's last answer; every other goes through the global stage.
 template <class Surfaces>
 ContactGeometry coldSolve(const PairFrame& f, const Surfaces& surfaces, const Pose& poseA, const Vec3& startNormal,
-                          int earlierIterations, const DetectorSettings& settings) {
+                          int earlierIterations, const DetectorSettings& settings, const WarmStart* previous) {
   if (degenerate(f)) {
     int iterations = earlierIterations;
     const SupportPair depth = globalSupportMinimum(f, iterations);
@@ -360,24 +447,19 @@ ContactGeometry coldSolve(const PairFrame& f, const Surfaces& surfaces, const Po
     g.iterations = iterations;
     return g;
   }
+  const auto polish = [&](const SupportPair& s, int iterations) {
+    return newtonSolve(f, surfaces, poseA, s.pointA, s.pointB, iterations + s.iterations, settings);
+  };
   const SupportPair guess = minimiseSupportGap(f, startNormal);
-  ContactGeometry g = newtonSolve(f, surfaces, poseA, guess.pointA, guess.pointB, earlierIterations + guess.iterations, settings);
-  if (settled(g)) return g;
+  ContactGeometry g = polish(guess, earlierIterations);
   // Deep overlaps: the Newton basin is narrower, so descend the support gap much further (its
   // minimum is itself a common-normal pair) before the second Newton attempt.
-  const SupportPair closer = minimiseSupportGap(f, guess.normal, 1e-7, 400);
-  g = newtonSolve(f, surfaces, poseA, closer.pointA, closer.pointB, g.iterations + closer.iterations, settings);
-  if (settled(g)) return g;
-  // Global stage: a start in another basin (elongated or blocky bodies whose line of centres
-  // points far from the least-penetration normal).
-  constexpr int globalStarts = 4;
-  const std::vector<SupportPair> starts = rankedStarts(f);
-  for (int k = 0; k < globalStarts && k < static_cast<int>(starts.size()); ++k) {
-    const SupportPair s = minimiseSupportGap(f, starts[k].normal, 1e-7, 400);
-    g = newtonSolve(f, surfaces, poseA, s.pointA, s.pointB, g.iterations + s.iterations, settings);
-    if (settled(g)) return g;
+  if (!settled(g)) g = polish(minimiseSupportGap(f, guess.normal, 1e-7, 400), g.iterations);
+  if (settled(g) && (g.overlap < 0.0 ? pointsOnTheirSides(f, g)
+                                     : g.overlap < uniqueMinimumReach(f) || continues(f, g, previous))) {
+    return g;
   }
-  return g;
+  return leastPenetration(f, g, polish);
 }
 
 /// Warm solve from the previous points, or cold, of a pair that passed the culls.
@@ -390,13 +472,13 @@ ContactGeometry solvePair(const PairFrame& f, const Pose& poseA, const DetectorS
     // jumps across a flat face), a cold solve from the previous normal instead.
     DetectorSettings quick = settings;
     quick.maxIterations = std::min(settings.maxIterations, warmIterationBudget);
-    const ContactGeometry g =
+    ContactGeometry g =
         newtonSolve(f, surfaces, poseA, previous->localPointA, f.fromB(previous->localPointB), 0, quick);
-    if (settled(g)) return g;
-    return coldSolve(f, surfaces, poseA, f.A.outwardNormal(previous->localPointA), g.iterations, settings);
+    if (settled(g) && (continues(f, g, previous) || pointsOnTheirSides(f, g))) return g;
+    return coldSolve(f, surfaces, poseA, f.A.outwardNormal(previous->localPointA), g.iterations, settings, previous);
   }
   const double distance = f.c.norm();
-  return coldSolve(f, surfaces, poseA, distance > 0.0 ? Vec3(f.c / distance) : Vec3::UnitX(), 0, settings);
+  return coldSolve(f, surfaces, poseA, distance > 0.0 ? Vec3(f.c / distance) : Vec3::UnitX(), 0, settings, nullptr);
 }
 
 ContactGeometry solve(const Superquadric& A, const Pose& poseA, const Superquadric& B,

@@ -65,12 +65,22 @@ struct PairGenerator {
     return q * (d.normalized() + 0.05 * randomUnit()).normalized();
   }
 
-  PlantedPair next() {
+  PairKind randomKind() {
     const double kindDraw = uniform(0.0, 1.0);
-    const PairKind kind = kindDraw < 0.1 ? PairKind::FaceOnFace
-                          : kindDraw < 0.2 ? PairKind::NearEdge
-                                           : PairKind::Generic;
-    PlantedPair p{randomShape(), randomShape(), {}, {}, Vec3::UnitZ(), 0.0, kind};
+    return kindDraw < 0.1 ? PairKind::FaceOnFace : kindDraw < 0.2 ? PairKind::NearEdge : PairKind::Generic;
+  }
+
+  PlantedPair next() {
+    const PairKind kind = randomKind();
+    Superquadric A = randomShape();
+    return next(A, randomShape(), kind);
+  }
+
+  /// A planted pair of the given shapes.
+  PlantedPair next(const Superquadric& A, const Superquadric& B) { return next(A, B, randomKind()); }
+
+  PlantedPair next(const Superquadric& A, const Superquadric& B, PairKind kind) {
+    PlantedPair p{A, B, {}, {}, Vec3::UnitZ(), 0.0, kind};
     p.poseA.orientation = randomRotation();
     p.poseB.orientation = randomRotation();
     p.poseA.position = Vec3(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1));

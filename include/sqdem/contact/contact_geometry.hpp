@@ -14,7 +14,9 @@ enum class ContactStatus : std::uint8_t {
   Separated,      ///< further apart than the cut-off (culled or solved); no contact
   MaxIterations,  ///< iteration limit reached before the tolerance
   Stalled,        ///< the safeguarded Newton iteration could not reduce the residual further
-  WrongBranch,    ///< converged to a common-normal pair on the far side of a body
+  /// converged to a common-normal pair that is not the contact: on the far side of a body,
+  /// deeper than the least penetration, or (apart) with a point inside the other body
+  WrongBranch,
   NonFinite,      ///< a non-finite number appeared (degenerate input)
   /// Coincident centres or a centre inside the other body: no reliable common normal. The
   /// answer is the penetration depth of the Minkowski difference (the minimum of the support

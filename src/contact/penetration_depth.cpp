@@ -1,0 +1,130 @@
+#include "penetration_depth.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <utility>
+#include <vector>
+
+namespace sqdem::detail {
+namespace {
+
+/// A triangle of the polytope, counter-clockwise seen from outside: its outward unit normal and
+/// the signed distance of its plane from the origin.
+struct Face {
+  std::array<int, 3> v;
+  Vec3 normal;
+  double distance;
+};
+
+/// The support points of K taken so far and their convex hull, kept by adding one point at a
+/// time: the faces the point sees are removed and the horizon joined to it.
+class Polytope {
+ public:
+  /// A tetrahedron of four points; false when they are (nearly) coplanar.
+  bool start(const std::array<Vec3, 4>& corners) {
+    points_.assign(corners.begin(), corners.end());
+    const double volume = (points_[1] - points_[0]).cross(points_[2] - points_[0]).dot(points_[3] - points_[0]);
+    if (!(std::abs(volume) > 1e-12)) return false;
+    // Each face with the corner opposite it, turned to face away from that corner.
+    for (auto [a, b, c, opposite] : {std::array<int, 4>{0, 1, 2, 3}, {0, 1, 3, 2}, {0, 2, 3, 1}, {1, 2, 3, 0}}) {
+      if ((points_[b] - points_[a]).cross(points_[c] - points_[a]).dot(points_[opposite] - points_[a]) > 0.0) std::swap(b, c);
+      if (!addFace(a, b, c)) return false;
+    }
+    return true;
+  }
+
+  /// Adds point w; false when no face sees it (it is inside, to round-off) or a face degenerates.
+  bool add(const Vec3& w) {
+    constexpr double seen = 1e-13;  // scaled coordinates
+    edges_.clear();
+    std::size_t kept = 0;
+    for (const Face& face : faces_) {  // the faces w sees leave their edges; the rest move up
+      if (face.normal.dot(w) - face.distance > seen) {
+        for (int k = 0; k < 3; ++k) edges_.emplace_back(face.v[k], face.v[(k + 1) % 3]);
+      } else {
+        faces_[kept++] = face;
+      }
+    }
+    if (edges_.empty()) return false;
+    faces_.resize(kept);
+    points_.push_back(w);
+    const int apex = static_cast<int>(points_.size()) - 1;
+    for (const auto& [a, b] : edges_) {  // the horizon: edges whose reverse no seen face has
+      if (std::find(edges_.begin(), edges_.end(), std::make_pair(b, a)) == edges_.end() && !addFace(a, b, apex)) {
+        return false;
+      }
+    }
+    return true;
+  }
+
+  const std::vector<Face>& faces() const { return faces_; }
+
+ private:
+  bool addFace(int a, int b, int c) {
+    const Vec3 n = (points_[b] - points_[a]).cross(points_[c] - points_[a]);
+    const double length = n.norm();
+    if (!(length > 0.0)) return false;
+    faces_.push_back({{a, b, c}, n / length, n.dot(points_[a]) / length});
+    return true;
+  }
+
+  std::vector<Vec3> points_;
+  std::vector<Face> faces_;
+  std::vector<std::pair<int, int>> edges_;  // scratch of add()
+};
+
+}  // namespace
+
+std::optional<Penetration> penetrationDepth(const PairFrame& f, double relativeTolerance) {
+  constexpr int maxIterations = 400;
+  const double L = f.lengthScale;
+  Penetration best;
+  best.upperBound = std::numeric_limits<double>::infinity();
+  // K's support point along unit n (scaled); every one bounds the least penetration from above.
+  const auto support = [&](const Vec3& n) {
+    const Vec3 w = (f.A.supportPoint(n) - f.fromB(f.B.supportPoint(f.R.transpose() * -n))) / L;
+    ++best.iterations;
+    if (n.dot(w) * L < best.upperBound) {
+      best.upperBound = n.dot(w) * L;
+      best.normal = n;
+    }
+    return w;
+  };
+  // Start: the support points along A's axes, both ways; a tetrahedron of the four most spread.
+  std::array<Vec3, 6> axes;
+  for (int k = 0; k < 6; ++k) axes[k] = support(Vec3::Unit(k / 2) * (k % 2 ? -1.0 : 1.0));
+  const auto furthest = [&](const auto& distance) {
+    return *std::max_element(axes.begin(), axes.end(), [&](const Vec3& x, const Vec3& y) { return distance(x) < distance(y); });
+  };
+  const Vec3 p0 = axes[0];
+  const Vec3 p1 = furthest([&](const Vec3& x) { return (x - p0).squaredNorm(); });
+  const Vec3 p2 = furthest([&](const Vec3& x) { return (x - p0).cross(p1 - p0).squaredNorm(); });
+  const Vec3 n012 = (p1 - p0).cross(p2 - p0);
+  const Vec3 p3 = furthest([&](const Vec3& x) { return std::abs((x - p0).dot(n012)); });
+  Polytope polytope;
+  if (!polytope.start({p0, p1, p2, p3})) return std::nullopt;
+  for (const Vec3& x : axes) polytope.add(x);  // no-op for the corners and points inside
+
+  bool containsOrigin = false;
+  double lower = 0.0;
+  while (best.iterations < maxIterations) {
+    // A face with the origin on or beyond its plane first (the polytope must enclose the
+    // origin), else the nearest face.
+    const auto& faces = polytope.faces();
+    const Face& face = *std::min_element(faces.begin(), faces.end(),
+                                         [](const Face& x, const Face& y) { return x.distance < y.distance; });
+    containsOrigin = face.distance > 0.0;
+    if (containsOrigin) lower = face.distance * L;
+    const Vec3 w = support(face.normal);
+    const double reach = face.normal.dot(w);  // h_K along the face's normal (scaled)
+    if (reach <= 0.0) return std::nullopt;     // a separating plane: the bodies do not overlap
+    if (containsOrigin && reach - face.distance <= relativeTolerance) break;
+    if (!polytope.add(w)) break;  // the support point is the face's own, to round-off
+  }
+  best.lowerBound = containsOrigin ? lower : 0.0;
+  return best;
+}
+
+}  // namespace sqdem::detail
