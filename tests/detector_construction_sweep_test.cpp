@@ -18,7 +18,8 @@
 //   - it breaks the common-normal conditions (contact_checks.hpp).
 // An overlapping answer's points need not lie inside the other body: where B is thin across the
 // normal, the least penetration pushes it out sideways and A's point lies beyond it (counted).
-// Requirements: no wrong converged answer, nothing non-finite, no overlap on an unsolved answer.
+// Requirements: no wrong converged answer, every pair converged or degenerate, nothing
+// non-finite, no overlap on an unsolved answer.
 // SQDEM_CONSTRUCTION_PAIRS sets the number of pairs (default 10^5); the table goes to stdout.
 
 #include <gtest/gtest.h>
@@ -192,6 +193,8 @@ TEST(DetectorConstructionSweep, MovedAlongTheProbesNormal) {
     EXPECT_EQ(r.wrongPairs, 0) << r.name;
     EXPECT_EQ(r.nonFinite, 0) << r.name;
     EXPECT_EQ(r.unsolvedWithOverlap, 0) << r.name;
+    // Nothing lost either: every pair converged or was flagged degenerate (a centre inside).
+    EXPECT_EQ(r.statuses[int(ContactStatus::Converged)] + r.statuses[int(ContactStatus::Degenerate)], r.pairs) << r.name;
     EXPECT_LE(r.probesUnsettled, pairs / 1000) << r.name;
   }
 }

@@ -8,6 +8,7 @@
 #include "contact/penetration_depth.hpp"
 #include "sqdem/contact/detector.hpp"
 #include "support/contact_checks.hpp"
+#include "support/random_pairs.hpp"
 #include "support/support_gap_search.hpp"
 
 namespace sqdem {
@@ -46,18 +47,28 @@ TEST(LeastPenetration, EpaFindsTheFaceOfStackedBlocks) {
   const detail::PairFrame f = frameOf(block, Pose{}, block, above);
   const std::optional<detail::Penetration> p = detail::penetrationDepth(f, 1e-8);
   ASSERT_TRUE(p);
+  EXPECT_TRUE(p->converged);
   EXPECT_NEAR(p->upperBound, 0.2, 1e-8);
   EXPECT_LE(p->lowerBound, 0.2 + 1e-15);
+  EXPECT_LE(p->upperBound - p->lowerBound, 1e-8 * f.lengthScale);
   EXPECT_GT(p->normal.z(), 1.0 - 1e-6);
   const ContactGeometry g = detectContact(block, Pose{}, block, above);
   ASSERT_TRUE(g.converged());
   EXPECT_NEAR(g.overlap, 0.2, 1e-8);
 }
 
+// Planted contacts (random_pairs.hpp: any orientation, n up to 20, axes to 1:10) opened by a gap
+// of 1e-9 .. 1e-3 L: EPA finds the separating plane every time.
 TEST(LeastPenetration, EpaFindsNothingBetweenSeparatedBodies) {
-  const Superquadric A(1.0, 0.5, 0.3, 6.0, 4.0);
-  const detail::PairFrame f = frameOf(A, Pose{}, A, Pose{Vec3(0.0, 0.0, 0.61), Quat::Identity()});
-  EXPECT_FALSE(detail::penetrationDepth(f, 1e-8));
+  testing::PairGenerator generator(31);
+  generator.maxExponent = 20.0;
+  generator.minAxisRatio = 0.1;
+  for (int k = 0; k < 500; ++k) {
+    testing::PlantedPair p = generator.next();
+    const double L = referenceVolumeRadius(p.A, p.B);
+    p.poseB.position += (p.overlap + L * std::pow(10.0, generator.uniform(-9.0, -3.0))) * p.normal;
+    EXPECT_FALSE(detail::penetrationDepth(frameOf(p.A, p.poseA, p.B, p.poseB), 1e-8)) << k;
+  }
 }
 
 // Issue 31's pair: moved along its own normal to an overlap of 5e-12 R_vol, it was reported
@@ -83,13 +94,14 @@ TEST(LeastPenetration, IssuePairIsTheNearTouchNotTheFarSide) {
   const std::optional<detail::Penetration> p =
       detail::penetrationDepth(frameOf(issueA, issuePoseA, issueB, issuePoseB), 1e-8);
   ASSERT_TRUE(p);
+  EXPECT_TRUE(p->converged);
   EXPECT_LE(p->lowerBound, g.overlap + 1e-14 * L);
   EXPECT_GE(p->upperBound, g.overlap - 1e-14 * L);
 }
 
 // The far-side pair of issue 31 handed over as a warm start: Newton stays on it (it is a
-// stationary pair), its overlap jumps from the previous 0 to 1.76 m, its points fail the side
-// check, and the cold solve finds the near touch.
+// stationary pair), its overlap jumps from the previous 0 to 1.76 m, so it is judged as a new
+// pair's and the near touch is found.
 TEST(LeastPenetration, WarmAnswerThatJumpedIsChecked) {
   const Vec3 farA(0.006725826869506346, 1.7329339747865407, -0.017768181729727717);
   const Vec3 farB(-0.8915254233571103, 0.2730747001947115, -0.4312109824634134);
@@ -117,11 +129,36 @@ TEST(LeastPenetration, ThinPlateLeastPenetrationWithAPointOutside) {
   ASSERT_TRUE(g.converged()) << describe(g.status);
   const std::optional<detail::Penetration> p = detail::penetrationDepth(frameOf(A, pa, B, pb), 1e-8);
   ASSERT_TRUE(p);
+  EXPECT_TRUE(p->converged);
+  EXPECT_LE(p->upperBound - p->lowerBound, 1e-8 * L);
   EXPECT_GE(g.overlap, p->lowerBound - 1e-14 * L);
   EXPECT_LE(g.overlap, p->upperBound + 1e-8 * L);
   EXPECT_LE(g.overlap, testing::searchedLeastOverlap(A, pa, B, pb) + 1e-8 * L);
   EXPECT_GT(B.gauge(pb.toBody(g.pointA)), 1.1);  // A's point beyond the plate
   EXPECT_LT(testing::commonNormalError(A, pa, B, pb, g, L), 1e-8 * L);
+}
+
+// Two n = 8 cubes, B slid from above A (least penetration along z) to beside it (along x): a
+// warm start from the z contact whose overlap jumped (0.5 -> 0.69 m: more than 1e-2 L) is judged
+// as a new pair's, so the answer is the least penetration along x; one that continues its last
+// overlap keeps its branch, the z face (detector.hpp: a warm pair follows its branch).
+TEST(LeastPenetration, WarmPairJudgedWhenItJumpsFollowsItsBranchOtherwise) {
+  const Superquadric cube(1.0, 1.0, 1.0, 8.0, 8.0);
+  const Pose above{Vec3(1.2, 0.01, 1.5), Quat::Identity()}, beside{Vec3(1.41, 0.01, 1.29), Quat::Identity()};
+  const ContactGeometry start = detectContact(cube, Pose{}, cube, above);
+  ASSERT_TRUE(start.converged());
+  ASSERT_GT(start.normal.z(), 0.9);
+  const ContactGeometry zFace = detectContact(cube, Pose{}, cube, beside, {}, WarmStart{start.localPointA, start.localPointB, start.overlap + 0.2});
+  ASSERT_TRUE(zFace.converged());
+  EXPECT_GT(zFace.normal.z(), 0.9);  // continued: 0.69 m along z, though x is shallower
+  const ContactGeometry jumped = detectContact(cube, Pose{}, cube, beside, {}, WarmStart{start.localPointA, start.localPointB, start.overlap});
+  ASSERT_TRUE(jumped.converged()) << describe(jumped.status);
+  EXPECT_GT(jumped.normal.x(), 0.9);
+  const std::optional<detail::Penetration> p = detail::penetrationDepth(frameOf(cube, Pose{}, cube, beside), 1e-8);
+  ASSERT_TRUE(p && p->converged);
+  EXPECT_LT(jumped.overlap, zFace.overlap - 0.05);
+  EXPECT_GE(jumped.overlap, p->lowerBound - 1e-12);
+  EXPECT_LE(jumped.overlap, p->upperBound + 1e-8);
 }
 
 }  // namespace

@@ -102,8 +102,9 @@ SupportPair supportPair(const PairFrame& f, const Vec3& n) {
 }
 
 /// Initial guess: descends the support gap over the unit sphere from startNormal (gradient
-/// P (pA - pB), step 1/(rA + rB) as for two spheres, backtracking). This lands in the basin of
-/// the least-penetration common normal; the Newton solve then polishes it.
+/// P (pA - pB), step 1/(rA + rB) as for two spheres, backtracking) into the basin it starts in,
+/// whose minimum the Newton solve then polishes (the least penetration only if that basin is
+/// the global minimum's: detector.hpp).
 SupportPair minimiseSupportGap(const PairFrame& f, const Vec3& startNormal,
                                double relativeTolerance = 1e-3, int maxIterations = 40) {
   SupportPair best = supportPair(f, startNormal);
@@ -321,7 +322,7 @@ ContactGeometry notTheContact(ContactGeometry g) {
 }
 
 /// An answer of a pair solved before continues the last one when its overlap moved by at most
-/// 1e-2 L (a stable step moves a particle by ~1e-4 of its size); otherwise it is new and checked.
+/// 1e-2 L (a stable step moves a particle by ~1e-4 of its size); otherwise it is new.
 bool continues(const PairFrame& f, const ContactGeometry& g, const WarmStart* previous) {
   constexpr double overlapJump = 1e-2;
   return previous != nullptr && std::abs(g.overlap - previous->overlap) <= overlapJump * f.lengthScale;
@@ -364,14 +365,13 @@ SupportPair globalSupportMinimum(const PairFrame& f, int& iterations) {
 /// pairs whose overlaps differ by less, the first found is reported.
 constexpr double leastPenetrationTolerance = 1e-8;
 
-/// Global stage (detector.hpp: which pair is reported), for overlapping answers, answers that
-/// failed the side check and none. With EPA's bounds of the least penetration
-/// (penetration_depth.hpp): an answer at the lower bound stands; otherwise the descent from EPA's
-/// normal is polished and kept when shallower. Without the bounds (the bodies do not overlap, or
-/// EPA's start was flat), or with no answer yet: descents from the ranked starts, those that
-/// undercut a believed answer or else the four best, the shallowest kept. The answer is believed
-/// within EPA's bounds, or without them when it passes the side check; otherwise it is not the
-/// contact.
+/// Global stage (detector.hpp: which pair is reported), for answers that are not certain. With
+/// EPA's converged bounds of the least penetration (penetration_depth.hpp): an answer at the
+/// lower bound stands; otherwise the descent from EPA's normal is polished and kept when
+/// shallower. An answer is believed within EPA's bounds, or without them (the bodies do not
+/// overlap, EPA's start was flat or it did not converge) when it passes the side check. While
+/// none is believed: descents from the ranked starts, those that undercut a believed answer or
+/// else the four best, the shallowest kept. An answer still not believed is not the contact.
 /// A later answer replaces an earlier only when shallower by more than the tolerance, so a pair
 /// found twice keeps its first bits.
 template <class Polish>
@@ -382,29 +382,29 @@ ContactGeometry leastPenetration(const PairFrame& f, ContactGeometry best, const
     iterations = g.iterations;
     if (settled(g) && (!settled(best) || g.overlap < best.overlap - tolerance)) best = g;
   };
-  const std::optional<detail::Penetration> epa = detail::penetrationDepth(f, leastPenetrationTolerance);
-  // Every common-normal pair's overlap lies between EPA's lower bound and, for the least
-  // penetration, its upper bound.
-  const auto withinBounds = [&](const ContactGeometry& g) {
+  std::optional<detail::Penetration> epa = detail::penetrationDepth(f, leastPenetrationTolerance);
+  if (epa) iterations += epa->iterations;
+  if (epa && !epa->converged) epa.reset();
+  // Every common-normal pair's overlap is at least EPA's lower bound, the least penetration's
+  // at most its upper bound.
+  const auto believed = [&](const ContactGeometry& g) {
+    if (!settled(g)) return false;
+    if (!epa) return pointsOnTheirSides(f, g);
     return g.overlap >= epa->lowerBound - tolerance && g.overlap <= epa->upperBound + tolerance;
   };
-  if (epa) {
-    iterations += epa->iterations;
-    if (!settled(best) || best.overlap > epa->lowerBound + tolerance) {
-      keepShallower(polish(minimiseSupportGap(f, epa->normal, 1e-7, 400), iterations));
-    }
+  if (epa && !(settled(best) && best.overlap <= epa->lowerBound + tolerance)) {
+    keepShallower(polish(minimiseSupportGap(f, epa->normal, 1e-7, 400), iterations));
   }
-  if (!epa || !settled(best)) {
+  if (!believed(best)) {
     constexpr int globalStarts = 4;
     int tried = 0;
     for (const SupportPair& start : rankedStarts(f)) {
-      const bool believed = settled(best) && (epa ? withinBounds(best) : pointsOnTheirSides(f, best));
-      if (believed ? start.gap >= best.overlap - tolerance : tried == globalStarts) break;
+      if (believed(best) ? start.gap >= best.overlap - tolerance : tried == globalStarts) break;
       ++tried;
       keepShallower(polish(minimiseSupportGap(f, start.normal, 1e-7, 400), iterations));
     }
   }
-  if (settled(best) && !(epa ? withinBounds(best) : pointsOnTheirSides(f, best))) best = notTheContact(best);
+  if (settled(best) && !believed(best)) best = notTheContact(best);
   best.iterations = iterations;
   return best;
 }
@@ -420,16 +420,22 @@ double uniqueMinimumReach(const PairFrame& f) {
   return leastRadius(f.A) + leastRadius(f.B);
 }
 
+/// A new answer that needs no search (detector.hpp): separated with its points outside the other
+/// body, or overlapping below the unique-minimum reach.
+bool certain(const PairFrame& f, const ContactGeometry& g) {
+  return g.overlap < 0.0 ? pointsOnTheirSides(f, g) : g.overlap < uniqueMinimumReach(f);
+}
+
 /// A pair the common-normal model cannot describe: coincident centres, or a centre inside the
 /// other body.
 bool degenerate(const PairFrame& f) {
   return f.c.norm() <= 1e-9 * f.lengthScale || f.A.gauge(f.c) < 1.0 || f.B.gauge(f.toB(Vec3::Zero())) < 1.0;
 }
 
-/// Cold solve from startNormal (of a new pair, or of a warm one whose Newton did not settle):
-/// support-gap descent then Newton; a longer descent if that did not settle. A separated answer
-/// that passes the side check stands, and an overlapping one below the unique-minimum reach or
-/// continuing the pair's last answer; every other goes through the global stage.
+/// Cold solve from startNormal (of a new pair, or of a warm one whose Newton did not settle, from
+/// its last normal): support-gap descent then Newton; a longer descent if that did not settle. A
+/// certain answer stands, and one that continues the pair's branch; every other goes through
+/// the global stage.
 template <class Surfaces>
 ContactGeometry coldSolve(const PairFrame& f, const Surfaces& surfaces, const Pose& poseA, const Vec3& startNormal,
                           int earlierIterations, const DetectorSettings& settings, const WarmStart* previous) {
@@ -455,10 +461,10 @@ ContactGeometry coldSolve(const PairFrame& f, const Surfaces& surfaces, const Po
   // Deep overlaps: the Newton basin is narrower, so descend the support gap much further (its
   // minimum is itself a common-normal pair) before the second Newton attempt.
   if (!settled(g)) g = polish(minimiseSupportGap(f, guess.normal, 1e-7, 400), g.iterations);
-  if (settled(g) && (g.overlap < 0.0 ? pointsOnTheirSides(f, g)
-                                     : g.overlap < uniqueMinimumReach(f) || continues(f, g, previous))) {
-    return g;
-  }
+  // The cold solve of a warm pair continues its branch when, besides the overlap, the normal
+  // (startNormal, the last one) turned by less than ~0.1 rad.
+  const bool sameBranch = continues(f, g, previous) && (poseA.rotation().transpose() * g.normal).dot(startNormal) > 0.995;
+  if (settled(g) && (sameBranch || certain(f, g))) return g;
   return leastPenetration(f, g, polish);
 }
 
@@ -474,7 +480,7 @@ ContactGeometry solvePair(const PairFrame& f, const Pose& poseA, const DetectorS
     quick.maxIterations = std::min(settings.maxIterations, warmIterationBudget);
     ContactGeometry g =
         newtonSolve(f, surfaces, poseA, previous->localPointA, f.fromB(previous->localPointB), 0, quick);
-    if (settled(g) && (continues(f, g, previous) || pointsOnTheirSides(f, g))) return g;
+    if (settled(g) && (continues(f, g, previous) || certain(f, g))) return g;
     return coldSolve(f, surfaces, poseA, f.A.outwardNormal(previous->localPointA), g.iterations, settings, previous);
   }
   const double distance = f.c.norm();

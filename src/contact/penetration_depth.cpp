@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -35,44 +36,57 @@ class Polytope {
     return true;
   }
 
-  /// Adds point w; false when no face sees it (it is inside, to round-off) or a face degenerates.
+  /// Adds point w: the faces it sees are replaced by the horizon joined to it. False, with the
+  /// polytope unchanged, when no face sees it (it is inside, to round-off) or a new face would
+  /// degenerate.
   bool add(const Vec3& w) {
     constexpr double seen = 1e-13;  // scaled coordinates
     edges_.clear();
-    std::size_t kept = 0;
-    for (const Face& face : faces_) {  // the faces w sees leave their edges; the rest move up
-      if (face.normal.dot(w) - face.distance > seen) {
+    for (const Face& face : faces_) {
+      if (seenFrom(face, w, seen)) {
         for (int k = 0; k < 3; ++k) edges_.emplace_back(face.v[k], face.v[(k + 1) % 3]);
-      } else {
-        faces_[kept++] = face;
       }
     }
     if (edges_.empty()) return false;
-    faces_.resize(kept);
     points_.push_back(w);
     const int apex = static_cast<int>(points_.size()) - 1;
+    fresh_.clear();
     for (const auto& [a, b] : edges_) {  // the horizon: edges whose reverse no seen face has
-      if (std::find(edges_.begin(), edges_.end(), std::make_pair(b, a)) == edges_.end() && !addFace(a, b, apex)) {
+      if (std::find(edges_.begin(), edges_.end(), std::make_pair(b, a)) != edges_.end()) continue;
+      const std::optional<Face> face = makeFace(a, b, apex);
+      if (!face) {
+        points_.pop_back();
         return false;
       }
+      fresh_.push_back(*face);
     }
+    std::erase_if(faces_, [&](const Face& face) { return seenFrom(face, w, seen); });
+    faces_.insert(faces_.end(), fresh_.begin(), fresh_.end());
     return true;
   }
 
   const std::vector<Face>& faces() const { return faces_; }
 
  private:
-  bool addFace(int a, int b, int c) {
+  static bool seenFrom(const Face& face, const Vec3& w, double seen) { return face.normal.dot(w) - face.distance > seen; }
+
+  std::optional<Face> makeFace(int a, int b, int c) const {
     const Vec3 n = (points_[b] - points_[a]).cross(points_[c] - points_[a]);
     const double length = n.norm();
-    if (!(length > 0.0)) return false;
-    faces_.push_back({{a, b, c}, n / length, n.dot(points_[a]) / length});
-    return true;
+    if (!(length > 0.0)) return std::nullopt;
+    return Face{{a, b, c}, n / length, n.dot(points_[a]) / length};
+  }
+
+  bool addFace(int a, int b, int c) {
+    const std::optional<Face> face = makeFace(a, b, c);
+    if (face) faces_.push_back(*face);
+    return face.has_value();
   }
 
   std::vector<Vec3> points_;
   std::vector<Face> faces_;
-  std::vector<std::pair<int, int>> edges_;  // scratch of add()
+  std::vector<std::pair<int, int>> edges_;  // scratch of add(): the seen faces' edges
+  std::vector<Face> fresh_;                  // scratch of add(): the faces on the horizon
 };
 
 }  // namespace
@@ -81,6 +95,7 @@ std::optional<Penetration> penetrationDepth(const PairFrame& f, double relativeT
   constexpr int maxIterations = 400;
   const double L = f.lengthScale;
   Penetration best;
+  best.lowerBound = -std::numeric_limits<double>::infinity();
   best.upperBound = std::numeric_limits<double>::infinity();
   // K's support point along unit n (scaled); every one bounds the least penetration from above.
   const auto support = [&](const Vec3& n) {
@@ -105,25 +120,27 @@ std::optional<Penetration> penetrationDepth(const PairFrame& f, double relativeT
   const Vec3 p3 = furthest([&](const Vec3& x) { return std::abs((x - p0).dot(n012)); });
   Polytope polytope;
   if (!polytope.start({p0, p1, p2, p3})) return std::nullopt;
-  for (const Vec3& x : axes) polytope.add(x);  // no-op for the corners and points inside
+  for (const Vec3& x : axes) polytope.add(x);  // unchanged for the corners and points inside
 
-  bool containsOrigin = false;
-  double lower = 0.0;
+  // A face with the origin on or beyond its plane first (the polytope must enclose the origin
+  // before its nearest face bounds anything), else the nearest face.
   while (best.iterations < maxIterations) {
-    // A face with the origin on or beyond its plane first (the polytope must enclose the
-    // origin), else the nearest face.
     const auto& faces = polytope.faces();
     const Face& face = *std::min_element(faces.begin(), faces.end(),
                                          [](const Face& x, const Face& y) { return x.distance < y.distance; });
-    containsOrigin = face.distance > 0.0;
-    if (containsOrigin) lower = face.distance * L;
-    const Vec3 w = support(face.normal);
-    const double reach = face.normal.dot(w);  // h_K along the face's normal (scaled)
-    if (reach <= 0.0) return std::nullopt;     // a separating plane: the bodies do not overlap
-    if (containsOrigin && reach - face.distance <= relativeTolerance) break;
-    if (!polytope.add(w)) break;  // the support point is the face's own, to round-off
+    const bool enclosed = face.distance > 0.0;
+    const Vec3 n = face.normal;
+    const double distance = face.distance;
+    const Vec3 w = support(n);
+    const double reach = n.dot(w);       // h_K along the face's normal (scaled)
+    if (reach <= 0.0) return std::nullopt;  // a separating plane: the bodies do not overlap
+    if (enclosed) best.lowerBound = distance * L;
+    if (enclosed && reach - distance <= relativeTolerance) {
+      best.converged = true;
+      break;
+    }
+    if (!polytope.add(w)) break;  // w is the face's own point to round-off, or a face degenerates
   }
-  best.lowerBound = containsOrigin ? lower : 0.0;
   return best;
 }
 

@@ -19,8 +19,8 @@ enum class ContactStatus : std::uint8_t {
   WrongBranch,
   NonFinite,      ///< a non-finite number appeared (degenerate input)
   /// Coincident centres or a centre inside the other body: no reliable common normal. The
-  /// answer is the penetration depth of the Minkowski difference (the minimum of the support
-  /// gap over all directions, from a global search): normal, overlap and support points are
+  /// answer approximates the penetration depth of the Minkowski difference (the least support
+  /// gap that descents from 22 ranked directions find): normal, overlap and support points are
   /// set, curvatures are not.
   Degenerate,
 };

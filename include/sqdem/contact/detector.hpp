@@ -14,40 +14,43 @@
 // Which pair is reported. Every common-normal pair is a stationary point of the support gap
 // s(n) = h_A(n) + h_B(-n) over unit n, with s(n) its overlap; a separated pair has one facing the
 // other body (s < 0, the distance), an overlapping pair may have several: far-side pairs, and
-// for deep overlaps of blocky or elongated bodies more than one local minimum. The detector
-// reports the **least penetration**, the global minimum of s (to 1e-8 L; of two pairs whose
-// overlaps differ by less, the first found), or minus the distance.
+// for deep overlaps of blocky or elongated bodies more than one local minimum. A new pair (a
+// cold solve) gets the **least penetration**, the global minimum of s (to 1e-8 L; of two pairs
+// whose overlaps differ by less, the first found), or minus the distance. A warm pair follows
+// its branch: while its answer continues the last one it stands, even where another pair has
+// meanwhile become shallower (a contact does not jump to another normal; it is re-judged when
+// its overlap jumps or its solve fails).
 //
-// Two facts decide when a stationary pair needs no search. The radii of curvature of the
-// Minkowski difference K = A - B are sums of A's and B's, so if all of A's are >= rA and B's >= rB,
-// K = K' + ball(rA + rB) with K' convex and s = h_K' + rA + rB; and a stationary point of a support
-// function with a negative value is its global minimum (its negative sublevel sets are
-// geodesically convex). So a separated answer (s < 0) is the distance, and an overlapping one
-// with overlap < rA + rB the least penetration. rA = c^2 / a for an ellipsoid (a >= b >= c);
-// for other exponents no bound is used (0).
+// Two facts decide when a stationary pair needs no search. The radius-of-curvature tensors of
+// A at n and of B at -n add to K = A - B's, so K's least radius is >= rA + rB (Weyl) where A's
+// radii are all >= rA and B's >= rB; then h_K - rA - rB is a support function (Blaschke's rolling
+// ball) and s = h_K' + rA + rB. And a stationary point n of a support function with a negative
+// value s is its global minimum: there the support point is s n, at distance -s from the
+// origin, and every h(m) >= -dist(0, K) >= s. So a separated answer (s < 0) is the distance, and
+// an overlapping one with overlap < rA + rB the least penetration. rA = c^2 / a for an ellipsoid
+// (a >= b >= c); for other exponents no bound is used (0).
 //
 // Cold starts first descend s from the line of centres; Newton polishes the descent's end (a
-// longer descent and a second Newton if it does not settle). A separated answer stands when its
-// points also pass the side check: each lies outside, or on, the other body (one gauge
-// evaluation each; it guards against an answer only nearly stationary). An overlapping answer
-// below rA + rB stands. Every other answer goes to the global stage: the expanding polytope algorithm on the
-// bodies' support maps (src/contact/penetration_depth.hpp) bounds the least penetration from
-// below and above; an answer at the lower bound stands, else the descent from EPA's normal is
-// polished and the shallower answer kept, and an answer deeper than the upper bound (or
-// shallower than the lower) is not the contact (status WrongBranch). Where EPA finds the bodies
-// apart, descents from the best of 22 ranked directions (line of centres, both bodies' axes, A's
-// diagonals, both signs) replace it and the side check judges. An overlapping answer's points
-// need not lie inside the other body: where B is thin across the normal the least penetration
-// pushes it out sideways and A's point lies beyond B. Warm starts begin at the previous points.
-// An answer that continues the pair's last one (its overlap moved by at most 1e-2 L) stands, as
-// a warm answer or from the cold solve a warm one falls back to; a warm answer whose overlap
-// jumped must pass the side check, else (or if Newton does not settle) the cold solve runs, and
-// a cold answer that jumped is checked as a new pair's. So a warm step costs one comparison
-// more; the checks run on new pairs and jumped answers (tests/detector_construction_sweep_test.cpp,
-// docs/performance.md). A non-converged answer
-// carries no overlap (0). Degenerate pairs (coincident centres, or a centre inside the other
-// body) are not solved: they get status Degenerate, with the global minimum of the support gap
-// from the ranked descents as overlap and its normal and support points.
+// longer descent and a second Newton if it does not settle). The answer is certain, and
+// stands, when it is separated and its points pass the side check (each outside, or on, the
+// other body: one gauge evaluation each, against an answer only nearly stationary), or when it
+// overlaps by less than rA + rB. Every other answer goes to the global stage: the expanding
+// polytope algorithm on the bodies' support maps (src/contact/penetration_depth.hpp) bounds the
+// least penetration from below and above; an answer at the lower bound stands, else the descent
+// from EPA's normal is polished and the shallower answer kept, and an answer outside the bounds
+// is not the contact (status WrongBranch). Where EPA finds the bodies apart or does not converge,
+// descents from the best of 22 ranked directions (line of centres, both bodies' axes, A's
+// diagonals, both signs) replace it and the side check judges. The side check cannot judge an
+// overlapping answer: where B is thin across the normal the least penetration pushes it out
+// sideways and A's point lies beyond B, and a deeper local minimum can have both points inside.
+// Warm starts begin at the previous points. A warm answer continues the last one when its
+// overlap moved by at most 1e-2 L, and a cold solve a warm pair falls back to when, besides, its
+// normal turned by less than ~0.1 rad; an answer that continues stands, one that jumped is judged
+// as a new pair's. So a warm step costs one comparison more (tests/detector_construction_sweep_test.cpp,
+// docs/performance.md). A non-converged answer carries no overlap (0). Degenerate pairs
+// (coincident centres, or a centre inside the other body) are not solved: they get status
+// Degenerate, with the least support gap the descents from the ranked directions find as
+// overlap and its normal and support points.
 //
 // Closed forms: sphere-sphere and sphere-plane (round_contact.hpp), and every
 // superquadric-plane pair (support map). Particle-cylinder: a one-dimensional search. Particle-
