@@ -366,10 +366,10 @@ SupportPair globalSupportMinimum(const PairFrame& f, int& iterations) {
 constexpr double leastPenetrationTolerance = 1e-8;
 
 /// Global stage (detector.hpp: which pair is reported), for answers that are not certain. With
-/// EPA's converged bounds of the least penetration (penetration_depth.hpp): an answer at the
-/// lower bound stands; otherwise the descent from EPA's normal is polished and kept when
-/// shallower. An answer is believed within EPA's bounds, or without them (the bodies do not
-/// overlap, EPA's start was flat or it did not converge) when it passes the side check. While
+/// EPA's bounds of the least penetration (penetration_depth.hpp): an answer at the lower bound
+/// stands; otherwise the descent from EPA's normal is polished and kept when shallower. An
+/// answer is believed within EPA's bounds, or without them (the bodies do not overlap, EPA's
+/// start was flat or its polytope never enclosed the origin) when it passes the side check. While
 /// none is believed: descents from the ranked starts, those that undercut a believed answer or
 /// else the four best, the shallowest kept. An answer still not believed is not the contact.
 /// A later answer replaces an earlier only when shallower by more than the tolerance, so a pair
@@ -382,14 +382,14 @@ ContactGeometry leastPenetration(const PairFrame& f, ContactGeometry best, const
     iterations = g.iterations;
     if (settled(g) && (!settled(best) || g.overlap < best.overlap - tolerance)) best = g;
   };
-  std::optional<detail::Penetration> epa = detail::penetrationDepth(f, leastPenetrationTolerance);
+  const std::optional<detail::Penetration> epa = detail::penetrationDepth(f, leastPenetrationTolerance);
   if (epa) iterations += epa->iterations;
-  if (epa && !epa->converged) epa.reset();
   // Every common-normal pair's overlap is at least EPA's lower bound, the least penetration's
-  // at most its upper bound.
+  // at most its upper bound (bounds also when EPA stopped short of its tolerance).
+  const bool bounded = epa && std::isfinite(epa->lowerBound);
   const auto believed = [&](const ContactGeometry& g) {
     if (!settled(g)) return false;
-    if (!epa) return pointsOnTheirSides(f, g);
+    if (!bounded) return pointsOnTheirSides(f, g);
     return g.overlap >= epa->lowerBound - tolerance && g.overlap <= epa->upperBound + tolerance;
   };
   if (epa && !(settled(best) && best.overlap <= epa->lowerBound + tolerance)) {

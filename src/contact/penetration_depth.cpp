@@ -92,7 +92,7 @@ class Polytope {
 }  // namespace
 
 std::optional<Penetration> penetrationDepth(const PairFrame& f, double relativeTolerance) {
-  constexpr int maxIterations = 400;
+  constexpr int maxIterations = 600;
   const double L = f.lengthScale;
   Penetration best;
   best.lowerBound = -std::numeric_limits<double>::infinity();

@@ -30,7 +30,7 @@ struct Penetration {
   int iterations = 0;       ///< support points of K taken
 };
 
-/// EPA until the bounds agree to relativeTolerance * L (at most 400 support points); nothing when
+/// EPA until the bounds agree to relativeTolerance * L (at most 600 support points); nothing when
 /// the bodies do not overlap (a face of the polytope separates the origin from K) or the start
 /// is flat. Unconverged bounds are still bounds.
 std::optional<Penetration> penetrationDepth(const PairFrame& f, double relativeTolerance);

@@ -38,7 +38,7 @@
 // polytope algorithm on the bodies' support maps (src/contact/penetration_depth.hpp) bounds the
 // least penetration from below and above; an answer at the lower bound stands, else the descent
 // from EPA's normal is polished and the shallower answer kept, and an answer outside the bounds
-// is not the contact (status WrongBranch). Where EPA finds the bodies apart or does not converge,
+// is not the contact (status WrongBranch). Where EPA finds the bodies apart or never encloses the origin,
 // descents from the best of 22 ranked directions (line of centres, both bodies' axes, A's
 // diagonals, both signs) replace it and the side check judges. The side check cannot judge an
 // overlapping answer: where B is thin across the normal the least penetration pushes it out
