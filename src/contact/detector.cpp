@@ -96,7 +96,7 @@ struct SupportPair {
 };
 
 SupportPair supportPair(const PairFrame& f, const Vec3& n) {
-  SupportPair s{n, f.A.supportPoint(n), f.fromB(f.B.supportPoint(f.R.transpose() * -n)), 0.0, 0};
+  SupportPair s{n, f.supportOfA(n), f.supportOfB(n), 0.0, 0};
   s.gap = n.dot(s.pointA - s.pointB);
   return s;
 }
@@ -478,7 +478,7 @@ ContactGeometry solvePair(const PairFrame& f, const Pose& poseA, const DetectorS
     // jumps across a flat face), a cold solve from the previous normal instead.
     DetectorSettings quick = settings;
     quick.maxIterations = std::min(settings.maxIterations, warmIterationBudget);
-    ContactGeometry g =
+    const ContactGeometry g =
         newtonSolve(f, surfaces, poseA, previous->localPointA, f.fromB(previous->localPointB), 0, quick);
     if (settled(g) && (continues(f, g, previous) || certain(f, g))) return g;
     return coldSolve(f, surfaces, poseA, f.A.outwardNormal(previous->localPointA), g.iterations, settings, previous);

@@ -26,6 +26,10 @@ struct PairFrame {
 
   Vec3 toB(const Vec3& p) const { return R.transpose() * (p - c); }
   Vec3 fromB(const Vec3& x) const { return c + R * x; }
+  /// Support points (A's frame) of A along n and of B along -n: their difference is the support
+  /// point of the Minkowski difference A - B along n.
+  Vec3 supportOfA(const Vec3& n) const { return A.supportPoint(n); }
+  Vec3 supportOfB(const Vec3& n) const { return fromB(B.supportPoint(R.transpose() * -n)); }
 };
 
 class SuperquadricSurfaces {

@@ -40,10 +40,9 @@ class Polytope {
   /// polytope unchanged, when no face sees it (it is inside, to round-off) or a new face would
   /// degenerate.
   bool add(const Vec3& w) {
-    constexpr double seen = 1e-13;  // scaled coordinates
     edges_.clear();
     for (const Face& face : faces_) {
-      if (seenFrom(face, w, seen)) {
+      if (seenFrom(face, w)) {
         for (int k = 0; k < 3; ++k) edges_.emplace_back(face.v[k], face.v[(k + 1) % 3]);
       }
     }
@@ -60,7 +59,7 @@ class Polytope {
       }
       fresh_.push_back(*face);
     }
-    std::erase_if(faces_, [&](const Face& face) { return seenFrom(face, w, seen); });
+    std::erase_if(faces_, [&](const Face& face) { return seenFrom(face, w); });
     faces_.insert(faces_.end(), fresh_.begin(), fresh_.end());
     return true;
   }
@@ -68,7 +67,8 @@ class Polytope {
   const std::vector<Face>& faces() const { return faces_; }
 
  private:
-  static bool seenFrom(const Face& face, const Vec3& w, double seen) { return face.normal.dot(w) - face.distance > seen; }
+  /// w lies beyond the face's plane by more than round-off (scaled coordinates).
+  static bool seenFrom(const Face& face, const Vec3& w) { return face.normal.dot(w) - face.distance > 1e-13; }
 
   std::optional<Face> makeFace(int a, int b, int c) const {
     const Vec3 n = (points_[b] - points_[a]).cross(points_[c] - points_[a]);
@@ -99,10 +99,11 @@ std::optional<Penetration> penetrationDepth(const PairFrame& f, double relativeT
   best.upperBound = std::numeric_limits<double>::infinity();
   // K's support point along unit n (scaled); every one bounds the least penetration from above.
   const auto support = [&](const Vec3& n) {
-    const Vec3 w = (f.A.supportPoint(n) - f.fromB(f.B.supportPoint(f.R.transpose() * -n))) / L;
+    const Vec3 w = (f.supportOfA(n) - f.supportOfB(n)) / L;
     ++best.iterations;
-    if (n.dot(w) * L < best.upperBound) {
-      best.upperBound = n.dot(w) * L;
+    const double gap = n.dot(w) * L;
+    if (gap < best.upperBound) {
+      best.upperBound = gap;
       best.normal = n;
     }
     return w;
