@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <numbers>
+#include <numeric>
 #include <random>
 
 #include "median.hpp"
@@ -57,13 +58,16 @@ int main(int argc, char** argv) {
     std::vector<Vec3> position(n);
     for (Vec3& x : position) x = Vec3(u(rng) * side, u(rng) * side, u(rng) * side);
     const double skin = 0.1 * k.rMin;
+    std::vector<std::uint32_t> id(n);
+    std::iota(id.begin(), id.end(), 0u);
+    const ParticleCloud cloud{position, radius, id};
     std::vector<double> cell, tree;
     std::size_t pairs = 0;
     for (int sample = 0; sample < 7; ++sample) {
       auto t0 = std::chrono::steady_clock::now();
-      pairs = cellListPairs(domain, position, radius, skin).size();
+      pairs = cellListPairs(domain, cloud, skin).size();
       auto t1 = std::chrono::steady_clock::now();
-      aabbTreePairs(domain, position, radius, skin);
+      aabbTreePairs(domain, cloud, skin);
       auto t2 = std::chrono::steady_clock::now();
       cell.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
       tree.push_back(std::chrono::duration<double, std::milli>(t2 - t1).count());

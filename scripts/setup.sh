@@ -5,7 +5,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(g++ make cmake libeigen3-dev libboost-dev libfcl-dev nlohmann-json3-dev
-          libgtest-dev libbenchmark-dev gnuplot-nox libyaml-cpp-dev libcgal-dev libvtk9-dev xvfb xauth)
+          libgtest-dev libbenchmark-dev gnuplot-nox libyaml-cpp-dev libcgal-dev libvtk9-dev libopenmpi-dev openmpi-bin
+          xvfb xauth)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -11,7 +11,7 @@
 #include <cstring>
 #include <random>
 
-#include "sqdem/world/checkpoint_file.hpp"
+#include "sqdem/archive/checkpoint_file.hpp"
 #include "sqdem/world/world.hpp"
 
 namespace sqdem {
@@ -61,7 +61,7 @@ void writeFile(const fs::path& p, const std::string& bytes) {
 /// Reads the file into a fresh world: true when accepted.
 bool accepted(const fs::path& p) {
   World world = makeWorld();
-  const std::string payload = readCheckpointFile(p, sceneHash);
+  const std::string payload = readCheckpointFile(p, {World::stateFingerprint(), sceneHash});
   CheckpointReader reader(payload);
   world.readState(reader);
   return true;
@@ -71,21 +71,21 @@ TEST(Checkpoint, RoundTripRestoresTheState) {
   const World original = makeWorld();
   ASSERT_GT(original.contacts().size(), 10u);
   const fs::path file = fs::temp_directory_path() / "sqdem_checkpoint_roundtrip.checkpoint";
-  writeCheckpointFile(file, sceneHash, payloadOf(original));
+  writeCheckpointFile(file, {World::stateFingerprint(), sceneHash}, payloadOf(original));
   World restored = makeWorld();
   for (int s = 0; s < 5; ++s) restored.step();  // a different state, overwritten by the read
-  const std::string payload = readCheckpointFile(file, sceneHash);
+  const std::string payload = readCheckpointFile(file, {World::stateFingerprint(), sceneHash});
   CheckpointReader reader(payload);
   restored.readState(reader);
   EXPECT_EQ(payloadOf(restored), payloadOf(original));
-  EXPECT_THROW(readCheckpointFile(file, sceneHash + 1), CheckpointError);  // another scene
+  EXPECT_THROW(readCheckpointFile(file, {World::stateFingerprint(), sceneHash + 1}), CheckpointError);  // another scene
   fs::remove(file);
 }
 
 TEST(Checkpoint, EveryRandomCorruptionIsRefused) {
   const fs::path good = fs::temp_directory_path() / "sqdem_checkpoint_good.checkpoint";
   const fs::path bad = fs::temp_directory_path() / "sqdem_checkpoint_bad.checkpoint";
-  writeCheckpointFile(good, sceneHash, payloadOf(makeWorld()));
+  writeCheckpointFile(good, {World::stateFingerprint(), sceneHash}, payloadOf(makeWorld()));
   const std::string original = readFile(good);
   std::mt19937_64 rng(2026);
   const auto below = [&](std::size_t n) { return std::uniform_int_distribution<std::size_t>(0, n - 1)(rng); };
@@ -132,7 +132,7 @@ TEST(Checkpoint, ForgedPayloadsAreBoundsChecked) {
     const std::size_t at = std::uniform_int_distribution<std::size_t>(0, bytes.size() - 4)(rng);
     const std::uint32_t word = t % 2 ? static_cast<std::uint32_t>(rng()) : 0xffffffffu - static_cast<std::uint32_t>(rng() % 4);
     std::memcpy(bytes.data() + at, &word, sizeof word);
-    writeCheckpointFile(forged, sceneHash, bytes);
+    writeCheckpointFile(forged, {World::stateFingerprint(), sceneHash}, bytes);
     try {
       read += accepted(forged);
     } catch (const CheckpointError&) {

@@ -12,7 +12,7 @@
 
 #include "sqdem/scene/build_world.hpp"
 #include "sqdem/scene/scene_loader.hpp"
-#include "sqdem/world/checkpoint_file.hpp"
+#include "sqdem/archive/checkpoint_file.hpp"
 
 namespace sqdem {
 namespace {

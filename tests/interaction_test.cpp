@@ -21,8 +21,8 @@ const Domain openSpace{.lo = Vec3::Constant(-1.0), .hi = Vec3::Constant(1.0)};
 ContactStore twoContacts() {
   ContactStore s;
   s.withRolling = true;
-  s.add(0, 3, Vec3(0.1, 0.0, 0.0));
-  s.add(1, 2, Vec3::Zero());
+  s.add({(std::uint64_t{4} << 32) | 9, 0}, 0, 3, Vec3(0.1, 0.0, 0.0));
+  s.add({(std::uint64_t{1} << 32) | 2, 0}, 1, 2, Vec3::Zero());
   s.localA[0] = Vec3(1, 2, 3);
   s.localB[0] = Vec3(4, 5, 6);
   s.normal[0] = Vec3(0, 0, 1);
@@ -36,48 +36,20 @@ ContactStore twoContacts() {
 
 }  // namespace
 
-// Exchanging A and B twice gives the contact back; once, every vector that points from A to B
-// (normal, spring, force, moment) turns, the points swap, the lever point moves by the shift.
-TEST(ContactStore, ExchangingBodiesTwiceIsTheIdentity) {
-  ContactStore s = twoContacts();
-  const ContactStore original = s;
-  s.exchangeBodies(0);
-  EXPECT_EQ(s.a[0], 3u);
-  EXPECT_EQ(s.b[0], 0u);
-  EXPECT_EQ(s.shift[0], Vec3(-0.1, 0.0, 0.0));
-  EXPECT_EQ(s.localA[0], original.localB[0]);
-  EXPECT_EQ(s.normal[0], -original.normal[0]);
-  EXPECT_EQ(s.point[0], original.point[0] - original.shift[0]);
-  EXPECT_EQ(s.spring[0], -original.spring[0]);
-  EXPECT_EQ(s.force[0], -original.force[0]);
-  EXPECT_EQ(s.moment[0], -original.moment[0]);
-  EXPECT_EQ(s.rolling[0], original.rolling[0]);  // symmetric in A and B (001 Eq. 20)
-  s.exchangeBodies(0);
-  EXPECT_EQ(s.a, original.a);
-  EXPECT_EQ(s.b, original.b);
-  EXPECT_EQ(s.shift, original.shift);
-  EXPECT_EQ(s.localA, original.localA);
-  EXPECT_EQ(s.localB, original.localB);
-  EXPECT_EQ(s.normal, original.normal);
-  EXPECT_NEAR((s.point[0] - original.point[0]).norm(), 0.0, 1e-16);
-  EXPECT_EQ(s.spring, original.spring);
-  EXPECT_EQ(s.force, original.force);
-  EXPECT_EQ(s.moment, original.moment);
-  EXPECT_EQ(s.rolling, original.rolling);
-}
-
-// Permuting re-orders every array together; carryOver copies the state, not the identity; a
-// store without rolling keeps neither the rolling displacement nor the moment.
-TEST(ContactStore, PermuteCarryOverAndOptionalArrays) {
-  ContactStore s = twoContacts();
-  s.permute({1, 0});
-  EXPECT_EQ(s.a[1], 0u);
-  EXPECT_EQ(s.localB[1], Vec3(4, 5, 6));
-  EXPECT_EQ(s.moment[1], Vec3(0, 1, 0));
+// A contact's key is its bodies' ids (and feature), not its slots; carryOver copies the state,
+// not the identity; a store without rolling keeps neither the rolling displacement nor the moment.
+TEST(ContactStore, KeysCarryOverAndOptionalArrays) {
+  const ContactStore s = twoContacts();
+  EXPECT_EQ(s.idA[0], 4u);
+  EXPECT_EQ(s.idB[0], 9u);
+  EXPECT_EQ(s.a[0], 0u);
+  EXPECT_EQ(s.b[0], 3u);
+  EXPECT_LT(s.key(1), s.key(0));  // ids 1-2 before 4-9, whatever the slots
   ContactStore next;
-  next.add(7, 8, Vec3::Zero());
-  next.carryOver(0, s, 1);
-  EXPECT_EQ(next.a[0], 7u);
+  next.add({(std::uint64_t{7} << 32) | 8, 0}, 5, 6, Vec3::Zero());
+  next.carryOver(0, s, 0);
+  EXPECT_EQ(next.a[0], 5u);
+  EXPECT_EQ(next.idA[0], 7u);
   EXPECT_EQ(next.localA[0], Vec3(1, 2, 3));
   EXPECT_EQ(next.spring[0], Vec3(1e-6, 0, 0));
   EXPECT_TRUE(next.rolling.empty());

@@ -1,9 +1,12 @@
 // Both broad-phase searches (cell list, FCL AABB tree) return exactly the pairs of an all-pairs
 // nearest-image search: bounding spheres closer than the skin (closed form), with the same
-// periodic image offsets, on polydisperse sets in open, partly and fully periodic boxes.
+// periodic image offsets, on polydisperse sets in open, partly and fully periodic boxes; every
+// pair oriented by id (the lower id is a, b seen at position[b] + shift), whatever the slots.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <random>
 
 #include "sqdem/world/neighbour_list.hpp"
@@ -16,6 +19,8 @@ struct Set {
   std::vector<Vec3> position;
   std::vector<double> radius;
   double skin;
+  std::vector<std::uint32_t> id;
+  ParticleCloud cloud() const { return {position, radius, id}; }
 };
 
 Set randomSet(std::array<bool, 3> periodic, Vec3 hi, int n, double rMin, double rMax, unsigned seed) {
@@ -26,6 +31,9 @@ Set randomSet(std::array<bool, 3> periodic, Vec3 hi, int n, double rMin, double 
     s.position.emplace_back(u(rng) * hi.x(), u(rng) * hi.y(), u(rng) * hi.z());
     s.radius.push_back(rMin + (rMax - rMin) * std::pow(u(rng), 3.0));
   }
+  s.id.resize(n);
+  std::iota(s.id.begin(), s.id.end(), 0u);
+  if (seed % 2 == 0) std::shuffle(s.id.begin(), s.id.end(), rng);  // slots not in id order
   return s;
 }
 
@@ -39,9 +47,13 @@ std::vector<CandidatePair> allPairs(const Set& s) {
         if (s.domain.periodic[d]) shift(d) = -L(d) * std::round((s.position[j](d) - s.position[i](d)) / L(d));
       }
       const double reach = s.radius[i] + s.radius[j] + s.skin;
-      if ((s.position[j] + shift - s.position[i]).squaredNorm() < reach * reach) pairs.push_back({i, j, shift});
+      if (((s.position[j] - s.position[i]) + shift).squaredNorm() >= reach * reach) continue;
+      pairs.push_back(s.id[i] < s.id[j] ? CandidatePair{i, j, shift} : CandidatePair{j, i, Vec3(-shift)});
     }
   }
+  std::sort(pairs.begin(), pairs.end(), [](const CandidatePair& x, const CandidatePair& y) {
+    return x.a != y.a ? x.a < y.a : x.b < y.b;
+  });
   return pairs;
 }
 
@@ -65,8 +77,8 @@ TEST(NeighbourList, BothSearchesMatchAllPairs) {
   for (const Set& s : sets) {
     const auto expected = allPairs(s);
     ASSERT_GT(expected.size(), 100u);
-    expectSame(expected, cellListPairs(s.domain, s.position, s.radius, s.skin), "cell list");
-    expectSame(expected, aabbTreePairs(s.domain, s.position, s.radius, s.skin), "AABB tree");
+    expectSame(expected, cellListPairs(s.domain, s.cloud(), s.skin), "cell list");
+    expectSame(expected, aabbTreePairs(s.domain, s.cloud(), s.skin), "AABB tree");
   }
 }
 

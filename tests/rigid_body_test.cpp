@@ -16,7 +16,7 @@ Vec3 worldAngularMomentum(const ParticleStore& p) { return p.orientation[0] * p.
 
 TEST(RigidBody, FreeAsymmetricTopConservesEnergyAndAngularMomentumAndFlips) {
   ParticleStore p;
-  p.add(0, 0, Vec3::Zero(), Quat(Eigen::AngleAxisd(0.3, Vec3(1, 2, 3).normalized())), 1.0, Vec3(1.0, 3.0, 5.0));
+  p.add(0, 0, Vec3::Zero(), Quat(Eigen::AngleAxisd(0.3, Vec3(1, 2, 3).normalized())), 1.0, Vec3(1.0, 3.0, 5.0), 1.0);
   // Spin about the intermediate axis with a small perturbation: unstable, flips periodically.
   p.setAngularVelocity(0, p.orientation[0] * Vec3(0.1, 2.0, 0.1));
   const double E0 = energy(p);
@@ -49,7 +49,7 @@ TEST(RigidBody, FreeAsymmetricTopConservesEnergyAndAngularMomentumAndFlips) {
 TEST(RigidBody, FreeRotationFollowsEulersEquations) {
   const Vec3 I(1.0, 2.0, 3.0);
   ParticleStore p;
-  p.add(0, 0, Vec3::Zero(), Quat::Identity(), 1.0, I);
+  p.add(0, 0, Vec3::Zero(), Quat::Identity(), 1.0, I, 1.0);
   Vec3 w(0.1, 2.0, 0.1);
   p.setAngularVelocity(0, w);
   const auto rate = [&](const Vec3& v) { return I.cwiseProduct(v).cross(v).cwiseQuotient(I).eval(); };
@@ -70,7 +70,7 @@ TEST(RigidBody, FreeRotationFollowsEulersEquations) {
 // velocity: after t its orientation is the rotation by |w| t about w (closed form).
 TEST(RigidBody, FreeSphereRotatesUniformly) {
   ParticleStore p;
-  p.add(0, 0, Vec3::Zero(), Quat(Eigen::AngleAxisd(0.3, Vec3::UnitY())), 1.0, Vec3::Constant(0.4));
+  p.add(0, 0, Vec3::Zero(), Quat(Eigen::AngleAxisd(0.3, Vec3::UnitY())), 1.0, Vec3::Constant(0.4), 1.0);
   const Vec3 w(1.0, -2.0, 0.5);
   p.setAngularVelocity(0, w);
   const double h = 1e-3;
@@ -88,7 +88,7 @@ TEST(RigidBody, FreeSphereRotatesUniformly) {
 
 TEST(RigidBody, VelocityVerletIsExactForConstantForce) {
   ParticleStore p;
-  p.add(0, 0, Vec3::Zero(), Quat::Identity(), 2.0, Vec3::Ones());
+  p.add(0, 0, Vec3::Zero(), Quat::Identity(), 2.0, Vec3::Ones(), 1.0);
   p.velocity[0] = Vec3(1.0, 0.0, 3.0);
   const Vec3 g(0.0, 0.0, -9.81);
   const double h = 1e-3;

@@ -34,7 +34,7 @@ TEST(GreenwoodWilliamson, ClosedFormsMatchTheIntegrals) {
               std::pow(2.0, 0.25) * std::tgamma(1.25) / std::sqrt(2 * std::numbers::pi), 1e-5);
 }
 
-// DESIGN.md §4: Boost's K_nu must be right in the shipped build (CGAL's -frounding-math broke it).
+// docs/architecture.md, "Layers": Boost's K_nu must be right in the shipped build (CGAL's -frounding-math broke it).
 TEST(GreenwoodWilliamson, BesselKSanity) {
   // F_3/2 at h = 0.01 uses K_1/4(2.5e-5) and K_3/4(2.5e-5): checked through the quadrature above;
   // here monotone decrease in h, as the integral demands.

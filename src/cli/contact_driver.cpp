@@ -20,7 +20,7 @@
 #include "driven_law.hpp"
 #include "json_input.hpp"
 #include "sqdem/contact/detector.hpp"
-#include "sqdem/io/atomic_file.hpp"
+#include "sqdem/archive/atomic_file.hpp"
 #include "sqdem/io/gnuplot.hpp"
 #include "sqdem/io/plain_name.hpp"
 #include "sqdem/mechanics/mindlin_deresiewicz.hpp"

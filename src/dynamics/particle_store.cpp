@@ -3,7 +3,7 @@
 namespace sqdem {
 
 std::size_t ParticleStore::add(std::uint32_t shapeIndex, std::uint32_t materialIndex, const Vec3& centre,
-                               const Quat& q, double particleMass, const Vec3& principalInertia) {
+                               const Quat& q, double particleMass, const Vec3& principalInertia, double bound) {
   id.push_back(static_cast<std::uint32_t>(size()));
   shape.push_back(shapeIndex);
   material.push_back(materialIndex);
@@ -16,6 +16,8 @@ std::size_t ParticleStore::add(std::uint32_t shapeIndex, std::uint32_t materialI
   torque.push_back(Vec3::Zero());
   mass.push_back(particleMass);
   inertia.push_back(principalInertia);
+  boundingRadius.push_back(bound);
+  speedBound.push_back(0.0);
   return size() - 1;
 }
 

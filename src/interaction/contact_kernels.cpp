@@ -283,12 +283,11 @@ void runGroup(PairKind kind, const std::vector<std::uint32_t>& members, const Co
 
 }  // namespace
 
-void Interactions::compute(const InteractionScene& scene, ContactStatistics& statistics) {
+void Interactions::compute(const InteractionScene& scene, std::vector<double>& speedBound, ContactStatistics& statistics) {
   const ParticleStore& p = scene.particles;
   const auto n = static_cast<std::ptrdiff_t>(p.size());
   // Only the iterative kinds cull separated pairs by the particles' speed bounds.
   const bool bounded = std::ranges::any_of(groups_, [](const Group& g) { return !round(g.kind) && !withWall(g.kind); });
-  speedBound_.resize(bounded ? p.size() : 0);
   // One parallel region per computation: the groups' loops do not wait for each other (each
   // writes only its own contacts), so a step pays one fork and one join here.
 #pragma omp parallel
@@ -296,12 +295,12 @@ void Interactions::compute(const InteractionScene& scene, ContactStatistics& sta
     if (bounded) {
 #pragma omp for schedule(static)
       for (std::ptrdiff_t i = 0; i < n; ++i) {
-        speedBound_[i] = p.velocity[i].norm() + p.angularVelocity[i].norm() * scene.boundingRadius[i];
+        speedBound[i] = p.velocity[i].norm() + p.angularVelocity[i].norm() * p.boundingRadius[i];
       }
     }
     for (const Group& group : groups_) {
       const ContactModel& model = scene.models[group.model];
-      std::visit([&](const auto& law) { runGroup(group.kind, group.members, model, law, scene, speedBound_, store_, statistics); },
+      std::visit([&](const auto& law) { runGroup(group.kind, group.members, model, law, scene, speedBound, store_, statistics); },
                  model.normal);
     }
   }

@@ -1,7 +1,5 @@
 #include "sqdem/interaction/contact_store.hpp"
 
-#include "sqdem/math/permutation.hpp"
-
 #include <type_traits>
 #include <utility>
 
@@ -31,15 +29,17 @@ void ContactStore::reserve(std::size_t n) {
   });
 }
 
-void ContactStore::add(std::uint32_t bodyA, std::uint32_t bodyB, const Vec3& bShift, std::uint32_t bFeature) {
+void ContactStore::add(const ContactKey& key, std::uint32_t slotA, std::uint32_t slotB, const Vec3& bShift) {
   const std::size_t k = size();
   forEachArray(*this, [&](auto& array) {
     if (keeps(&array)) array.push_back(fresh<Element<decltype(array)>>());
   });
-  a[k] = bodyA;
-  b[k] = bodyB;
+  idA[k] = static_cast<std::uint32_t>(key.pair >> 32);
+  idB[k] = static_cast<std::uint32_t>(key.pair);
+  feature[k] = key.feature;
+  a[k] = slotA;
+  b[k] = slotB;
   shift[k] = bShift;
-  feature[k] = bFeature;
   normal[k] = Vec3::UnitZ();
 }
 
@@ -56,24 +56,6 @@ void ContactStore::carryOver(std::size_t k, const ContactStore& other, std::size
                                                                : void()),
      ...);
   }, stateArrays);
-}
-
-void ContactStore::permute(const std::vector<std::uint32_t>& order) {
-  forEachArray(*this, [&](auto& array) {
-    if (keeps(&array)) sqdem::permute(array, order);
-  });
-}
-
-void ContactStore::exchangeBodies(std::size_t k) {
-  std::swap(a[k], b[k]);
-  const Vec3 s = shift[k];
-  shift[k] = -s;
-  std::swap(localA[k], localB[k]);
-  normal[k] = -normal[k];
-  point[k] -= s;
-  spring[k] = -spring[k];  // the rolling displacement is symmetric in A and B (001 Eq. 20)
-  force[k] = -force[k];
-  if (withRolling) moment[k] = -moment[k];
 }
 
 }  // namespace sqdem

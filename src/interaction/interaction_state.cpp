@@ -1,10 +1,10 @@
 // Checkpoints of the contact store: every array raw (plain data), then on reading every count,
-// index, status and the key order checked before the store is replaced.
+// index, id, status and key checked before the store is replaced.
 
 #include <string>
 
 #include "sqdem/interaction/interactions.hpp"
-#include "sqdem/world/checkpoint_file.hpp"
+#include "sqdem/archive/checkpoint_file.hpp"
 
 namespace sqdem {
 
@@ -45,19 +45,25 @@ Interactions Interactions::readState(CheckpointReader& in, const InteractionScen
   in.getVector(interacting, count);
 
   const std::size_t n = scene.particles.size(), walls = scene.walls.size();
+  const std::vector<std::uint32_t>& id = scene.particles.id;
   for (std::size_t k = 0; k < count; ++k) {
-    requireIntact(s.a[k] < n && (s.onWall(k) ? (s.b[k] & ~wallFlag) < walls : s.b[k] < n && s.a[k] != s.b[k]),
-            "contact index");
+    requireIntact(s.a[k] < n && s.idA[k] == id[s.a[k]], "contact body A");
+    requireIntact(s.onWall(k) ? (s.b[k] & ~wallFlag) < walls && s.idB[k] == s.b[k]
+                              : s.b[k] < n && s.idB[k] == id[s.b[k]] && s.idA[k] < s.idB[k],
+                  "contact body B");
     requireIntact(static_cast<unsigned>(s.status[k]) <= static_cast<unsigned>(ContactStatus::Degenerate), "contact status");
-    requireIntact(k == 0 || s.key(k - 1) < s.key(k), "contact order");
     const Wall* wall = s.onWall(k) ? &scene.walls[s.b[k] & ~wallFlag] : nullptr;
     const bool onMesh = wall != nullptr && wall->shape == WallShape::Mesh;
     requireIntact(onMesh ? wall->mesh < scene.meshes.size() && s.feature[k] < scene.meshes[wall->mesh].featureCount()
                          : s.feature[k] == 0,
                   "mesh feature");
   }
+  out.sortKeys();
+  for (std::size_t m = 1; m < count; ++m) requireIntact(s.key(out.keyOrder_[m - 1]) < s.key(out.keyOrder_[m]), "contact keys");
   for (std::size_t k = 0; k < interacting.size(); ++k) {
-    requireIntact(interacting[k] < count && (k == 0 || interacting[k - 1] < interacting[k]), "interacting contacts");
+    requireIntact(interacting[k] < count && s.acting[interacting[k]] &&
+                      (k == 0 || s.key(interacting[k - 1]) < s.key(interacting[k])),
+                  "interacting contacts");
   }
   out.interacting_ = std::move(interacting);
   out.regroup(scene);

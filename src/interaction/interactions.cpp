@@ -4,6 +4,7 @@
 #include <map>
 #include <numeric>
 #include <stdexcept>
+#include <utility>
 
 namespace sqdem {
 namespace {
@@ -50,19 +51,31 @@ ContactStatistics& ContactStatistics::operator+=(const ContactStatistics& o) {
 
 void Interactions::setCandidates(const std::vector<CandidateKey>& candidates, const InteractionScene& scene) {
   if (candidates.size() >= bodyBFlag) throw std::length_error("Interactions: more than 2^31 candidate contacts");
+  const std::vector<std::uint32_t>& id = scene.particles.id;
   ContactStore next = emptyStore(scene);
   next.reserve(candidates.size());
-  for (const CandidateKey& c : candidates) next.add(c.a, c.b, c.shift, c.feature);
-  // Carry the state of pairs that persist (both lists are sorted by key).
-  std::size_t previous = 0;
-  for (std::size_t k = 0; k < next.size(); ++k) {
-    while (previous < store_.size() && store_.key(previous) < next.key(k)) ++previous;
-    if (previous < store_.size() && store_.key(previous) == next.key(k)) next.carryOver(k, store_, previous);
+  for (const CandidateKey& c : candidates) {
+    const std::uint32_t idB = (c.b & wallFlag) != 0 ? c.b : id[c.b];
+    next.add({(std::uint64_t{id[c.a]} << 32) | idB, c.feature}, c.a, c.b, c.shift);
   }
-  store_ = std::move(next);
+  std::vector<std::uint32_t> previousOrder = std::move(keyOrder_);
+  const ContactStore previous = std::exchange(store_, std::move(next));
+  sortKeys();
+  // Carry the state of pairs that persist: both stores walked in key order.
+  auto old = previousOrder.begin();
+  for (const std::uint32_t k : keyOrder_) {
+    while (old != previousOrder.end() && previous.key(*old) < store_.key(k)) ++old;
+    if (old != previousOrder.end() && previous.key(*old) == store_.key(k)) store_.carryOver(k, previous, *old);
+  }
   interacting_.clear();
   regroup(scene);
   indexInvolvement(scene.particles.size());
+}
+
+void Interactions::sortKeys() {
+  keyOrder_.resize(store_.size());
+  std::iota(keyOrder_.begin(), keyOrder_.end(), 0u);
+  std::sort(keyOrder_.begin(), keyOrder_.end(), [&](std::uint32_t x, std::uint32_t y) { return store_.key(x) < store_.key(y); });
 }
 
 void Interactions::fitStore(const InteractionScene& scene) {
@@ -73,7 +86,7 @@ void Interactions::fitStore(const InteractionScene& scene) {
   }
   ContactStore fitted = wanted;
   for (std::size_t k = 0; k < store_.size(); ++k) {
-    fitted.add(store_.a[k], store_.b[k], store_.shift[k], store_.feature[k]);
+    fitted.add(store_.key(k), store_.a[k], store_.b[k], store_.shift[k]);
     fitted.carryOver(k, store_, k);
   }
   store_ = std::move(fitted);
@@ -97,38 +110,27 @@ void Interactions::indexInvolvement(std::size_t particleCount) {
   std::partial_sum(involvementStart_.begin(), involvementStart_.end(), involvementStart_.begin());
   involvement_.resize(involvementStart_.back());
   std::vector<std::uint32_t> fill(involvementStart_.begin(), involvementStart_.end() - 1);
-  for (std::uint32_t k = 0; k < store_.size(); ++k) {
+  for (const std::uint32_t k : keyOrder_) {
     involvement_[fill[store_.a[k]]++] = k;
     if (!store_.onWall(k)) involvement_[fill[store_.b[k]]++] = k | bodyBFlag;
   }
 }
 
-void Interactions::renumber(const std::vector<std::uint32_t>& slotOf, const InteractionScene& scene) {
+void Interactions::followSlots(const std::vector<std::uint32_t>& slotOf) {
   for (std::size_t k = 0; k < store_.size(); ++k) {
     store_.a[k] = slotOf[store_.a[k]];
-    if (store_.onWall(k)) continue;
-    store_.b[k] = slotOf[store_.b[k]];
-    if (store_.a[k] > store_.b[k]) store_.exchangeBodies(k);
+    if (!store_.onWall(k)) store_.b[k] = slotOf[store_.b[k]];
   }
-  std::vector<std::uint32_t> order(store_.size());
-  std::iota(order.begin(), order.end(), 0u);
-  std::sort(order.begin(), order.end(), [&](std::uint32_t x, std::uint32_t y) { return store_.key(x) < store_.key(y); });
-  store_.permute(order);
-  interacting_.clear();
-  for (std::uint32_t k = 0; k < store_.size(); ++k) {
-    if (store_.acting[k]) interacting_.push_back(k);
-  }
-  regroup(scene);
-  indexInvolvement(scene.particles.size());
+  indexInvolvement(slotOf.size());
 }
 
-ContactEnergy Interactions::energy() const {
-  ContactEnergy sum;
+std::array<ExactSum, 4> Interactions::energy() const {
+  std::array<ExactSum, 4> sum;
   for (const ContactEnergy& e : store_.energy) {
-    sum.stored += e.stored;
-    sum.normal += e.normal;
-    sum.damping += e.damping;
-    sum.tangential += e.tangential;
+    sum[0].add(e.stored);
+    sum[1].add(e.normal);
+    sum[2].add(e.damping);
+    sum[3].add(e.tangential);
   }
   return sum;
 }
@@ -137,8 +139,9 @@ std::size_t Interactions::bytes() const {
   std::size_t total = 0;
   ContactStore::forEachArray(store_, [&](const auto& array) { total += array.capacity() * sizeof(array[0]); });
   for (const Group& g : groups_) total += g.members.capacity() * sizeof(std::uint32_t);
-  total += (involvementStart_.capacity() + involvement_.capacity() + interacting_.capacity()) * sizeof(std::uint32_t);
-  return total + speedBound_.capacity() * sizeof(double);
+  total += (keyOrder_.capacity() + involvementStart_.capacity() + involvement_.capacity() + interacting_.capacity()) *
+           sizeof(std::uint32_t);
+  return total;
 }
 
 }  // namespace sqdem

@@ -1,11 +1,12 @@
-// The reduction of the contacts' loads to particles and walls, in key order per body (see
-// interactions.hpp: independent of the thread count).
+// The reduction of the contacts' loads to particles, in key order per particle, and to walls, as
+// exact sums (see interactions.hpp: independent of the thread count, the slots and the ranks).
 
 #include "sqdem/interaction/interactions.hpp"
 
 namespace sqdem {
 
-void Interactions::reduce(ParticleStore& p, const Vec3& gravity, double drag, std::vector<Wall>& walls) {
+void Interactions::reduce(ParticleStore& p, const Vec3& gravity, double drag, const std::vector<Wall>& walls,
+                          std::vector<WallLoadSum>& wallLoads) {
   const ContactStore& s = store_;
   const auto n = static_cast<std::ptrdiff_t>(p.size());
 #pragma omp parallel for schedule(static)
@@ -26,23 +27,24 @@ void Interactions::reduce(ParticleStore& p, const Vec3& gravity, double drag, st
       }
     }
   }
-  for (Wall& w : walls) {
-    w.force.setZero();
-    w.torque.setZero();
-    w.elasticForce.setZero();
-    w.stiffness = 0.0;
-  }
+  // The force-carrying contacts in key order, and the walls' shares, in one pass.
+  wallLoads.assign(walls.size(), WallLoadSum{});
   interacting_.clear();
-  for (std::uint32_t k = 0; k < s.size(); ++k) {
+  for (const std::uint32_t k : keyOrder_) {
     if (!s.acting[k]) continue;
-    if (s.onWall(k)) {
-      Wall& w = walls[s.b[k] & ~wallFlag];
-      w.force += s.force[k];
-      w.torque += (s.point[k] - s.shift[k] - w.reference()).cross(s.force[k]) + (s.withRolling ? s.moment[k] : Vec3::Zero());
-      w.elasticForce += s.force[k] - s.load[k].damping * s.normal[k];
-      w.stiffness += s.load[k].stiffness;
-    }
     interacting_.push_back(k);
+    if (!s.onWall(k)) continue;
+    const std::uint32_t w = s.b[k] & ~wallFlag;
+    const Vec3 torque = (s.point[k] - s.shift[k] - walls[w].reference()).cross(s.force[k]) +
+                        (s.withRolling ? s.moment[k] : Vec3::Zero());
+    const Vec3 elastic = s.force[k] - s.load[k].damping * s.normal[k];
+    std::array<ExactSum, 10>& part = wallLoads[w].part;
+    for (int d = 0; d < 3; ++d) {
+      part[WallLoadSum::force + d].add(s.force[k](d));
+      part[WallLoadSum::torque + d].add(torque(d));
+      part[WallLoadSum::elasticForce + d].add(elastic(d));
+    }
+    part[WallLoadSum::stiffness].add(s.load[k].stiffness);
   }
 }
 

@@ -6,7 +6,7 @@
 
 #include <stdexcept>
 
-#include "sqdem/io/atomic_file.hpp"
+#include "sqdem/archive/atomic_file.hpp"
 #include "sqdem/io/plain_name.hpp"
 
 namespace sqdem {

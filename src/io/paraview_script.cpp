@@ -1,6 +1,6 @@
 #include "sqdem/io/paraview_script.hpp"
 
-#include "sqdem/io/atomic_file.hpp"
+#include "sqdem/archive/atomic_file.hpp"
 
 namespace sqdem {
 

@@ -5,7 +5,7 @@
 #include <utility>
 
 #include "sqdem/geometry/superquadric_tessellation.hpp"
-#include "sqdem/io/atomic_file.hpp"
+#include "sqdem/archive/atomic_file.hpp"
 #include "sqdem/io/paraview_script.hpp"
 #include "sqdem/io/poly_data.hpp"
 #include "sqdem/io/vtk_xml.hpp"

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <sstream>
 
-#include "sqdem/io/atomic_file.hpp"
+#include "sqdem/archive/atomic_file.hpp"
 #include "sqdem/io/gnuplot.hpp"
 
 namespace sqdem {

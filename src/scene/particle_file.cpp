@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <sstream>
 
-#include "sqdem/io/atomic_file.hpp"
+#include "sqdem/archive/atomic_file.hpp"
 
 namespace sqdem {
 namespace {

@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "sqdem/scene/scene_fingerprint.hpp"
-#include "sqdem/world/checkpoint_file.hpp"
+#include "sqdem/archive/checkpoint_file.hpp"
 
 namespace sqdem {
 void writeRunCheckpoint(const std::filesystem::path& path, const Scene& scene, const RunProgress& progress,
@@ -14,13 +14,13 @@ void writeRunCheckpoint(const std::filesystem::path& path, const Scene& scene, c
   out.put(progress.stageStart);
   out.put(progress.totalSteps);
   world.writeState(out);
-  writeCheckpointFile(path, sceneFingerprint(scene), out.bytes());
+  writeCheckpointFile(path, {World::stateFingerprint(), sceneFingerprint(scene)}, out.bytes());
 }
 
 RunProgress readRunCheckpoint(const std::filesystem::path& path, const Scene& scene, World& world) {
   RunProgress progress;
   try {
-    const std::string payload = readCheckpointFile(path, sceneFingerprint(scene));
+    const std::string payload = readCheckpointFile(path, {World::stateFingerprint(), sceneFingerprint(scene)});
     CheckpointReader in(payload);
     in.get(progress.stage);
     in.get(progress.stepInStage);

@@ -3,7 +3,7 @@
 // CRC-64. A new Scene field must be added here.
 
 #include "sqdem/scene/scene_fingerprint.hpp"
-#include "sqdem/world/checkpoint_file.hpp"
+#include "sqdem/archive/checkpoint_file.hpp"
 
 namespace sqdem {
 namespace {

@@ -57,7 +57,7 @@ RunPlan planRun(const Scene& scene, const World& world) {
     plan.warnings.push_back(std::string(text) + "; the run may be unstable");
   }
   for (std::size_t k = 0; k < scene.stages.size(); ++k) plan.stageSteps.push_back(stageSteps(scene, k, dt));
-  const std::size_t n = world.particles().size();
+  const auto n = static_cast<std::size_t>(world.communicator().sum(static_cast<long long>(world.particles().size())));
   plan.surfaceResolution = scene.output.surfaceResolution.value_or(n <= surfacesByDefaultUpTo ? defaultSurfaceResolution : 0);
   if (!scene.output.surfaceResolution && plan.surfaceResolution == 0) {
     std::snprintf(text, sizeof text, "%zu particles: their surfaces are not drawn by default above %zu (set "
@@ -67,9 +67,7 @@ RunPlan planRun(const Scene& scene, const World& world) {
   }
   // A domain the particles fill to less than 1e-6 is most likely a unit slip (domain in m,
   // shapes in um): it runs (the cell grid adapts), but the user is told.
-  double volume = 0.0;
-  for (const std::uint32_t s : world.particles().shape) volume += world.shapes()[s].volume();
-  const double fraction = volume / scene.domain.length().prod();
+  const double fraction = solidVolume(world) / scene.domain.length().prod();
   if (fraction < 1e-6) {
     std::snprintf(text, sizeof text, "%s: the particles fill %.2g of the domain's volume; are 'domain' and 'shapes' "
                   "both in m?", scene.path.c_str(), fraction);
@@ -80,11 +78,12 @@ RunPlan planRun(const Scene& scene, const World& world) {
 
 double kineticEnergyRatio(const World& world, const Vec3& gravity, double velocityScale) {
   const ParticleStore& p = world.particles();
-  double scale = 0.0;
+  ExactSum share;
   for (std::size_t i = 0; i < p.size(); ++i) {
-    scale += velocityScale > 0.0 ? 0.5 * p.mass[i] * velocityScale * velocityScale
-                                 : p.mass[i] * gravity.norm() * world.shapes()[p.shape[i]].volumeEquivalentRadius();
+    share.add(velocityScale > 0.0 ? 0.5 * p.mass[i] * velocityScale * velocityScale
+                                  : p.mass[i] * gravity.norm() * world.shapes()[p.shape[i]].volumeEquivalentRadius());
   }
+  const double scale = world.communicator().sum(share);
   return scale > 0.0 ? world.kineticEnergy() / scale : 0.0;
 }
 

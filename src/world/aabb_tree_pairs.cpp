@@ -23,20 +23,17 @@ struct Found {
 };
 
 struct Search {
-  const std::vector<Vec3>& position;
-  const std::vector<double>& radius;
+  const ParticleCloud& cloud;
   double skin;
   std::uint32_t query = 0;        ///< the queried particle, for image queries
   Vec3 shift = Vec3::Zero();      ///< the queried image is at position[query] + shift
   std::vector<Found> found;
 
-  /// Records i seen from j at position[i] + s, as (a < b) with b's image offset.
+  /// Records i seen from j at position[i] + s, oriented by id.
   void consider(std::uint32_t i, std::uint32_t j, const Vec3& s) {
     if (i == j) return;
-    const double reach = radius[i] + radius[j] + skin;
-    const double d2 = (position[i] + s - position[j]).squaredNorm();
-    if (d2 >= reach * reach) return;
-    found.push_back(j < i ? Found{{j, i, s}, d2} : Found{{i, j, Vec3(-s)}, d2});
+    const double d2 = candidateDistanceSquared(cloud, j, i, s);
+    if (withinSkin(cloud, j, i, d2, skin)) found.push_back({oriented(cloud, j, i, s), d2});
   }
 };
 
@@ -58,8 +55,9 @@ bool imagePair(fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2, void* data)
 
 }  // namespace
 
-std::vector<CandidatePair> aabbTreePairs(const Domain& domain, const std::vector<Vec3>& position,
-                                         const std::vector<double>& radius, double skin) {
+std::vector<CandidatePair> aabbTreePairs(const Domain& domain, const ParticleCloud& cloud, double skin) {
+  const std::vector<Vec3>& position = cloud.position;
+  const std::vector<double>& radius = cloud.radius;
   const std::size_t n = position.size();
   if (n < 2) return {};
   std::vector<std::shared_ptr<fcl::Sphered>> spheres;
@@ -78,7 +76,7 @@ std::vector<CandidatePair> aabbTreePairs(const Domain& domain, const std::vector
   tree.registerObjects(registered);
   tree.setup();
 
-  Search search{position, radius, skin};
+  Search search{cloud, skin};
   tree.collide(&search, selfPair);
 
   const double maxRadius = *std::max_element(radius.begin(), radius.end());

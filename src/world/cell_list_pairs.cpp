@@ -13,8 +13,9 @@ constexpr int minimumPeriodicCells = 3;
 
 }  // namespace
 
-std::vector<CandidatePair> cellListPairs(const Domain& domain, const std::vector<Vec3>& position,
-                                         const std::vector<double>& radius, double skin) {
+std::vector<CandidatePair> cellListPairs(const Domain& domain, const ParticleCloud& cloud, double skin) {
+  const std::vector<Vec3>& position = cloud.position;
+  const std::vector<double>& radius = cloud.radius;
   std::vector<CandidatePair> pairs;
   const std::size_t n = position.size();
   if (n < 2) return pairs;
@@ -81,7 +82,8 @@ std::vector<CandidatePair> cellListPairs(const Domain& domain, const std::vector
           for (int k = start[c]; k < start[c + 1]; ++k) {
             const std::uint32_t j = sorted[k];
             if (j <= i) continue;
-            // A single periodic cell along d: take the nearest image of j.
+            // A single periodic cell along d: take the nearest image of j (the same seen from
+            // either side: round(-x) = -round(x)).
             Vec3 s = shift;
             for (int d = 0; d < 3; ++d) {
               if (cells[d] == 1 && domain.periodic[d]) {
@@ -89,10 +91,8 @@ std::vector<CandidatePair> cellListPairs(const Domain& domain, const std::vector
                 s(d) = -L * std::round(dd / L);
               }
             }
-            const double reach = radius[i] + radius[j] + skin;
-            if ((position[j] + s - position[i]).squaredNorm() < reach * reach) {
-              pairs.push_back({static_cast<std::uint32_t>(i), j, s});
-            }
+            const auto a = static_cast<std::uint32_t>(i);
+            if (withinSkin(cloud, a, j, candidateDistanceSquared(cloud, a, j, s), skin)) pairs.push_back(oriented(cloud, a, j, s));
           }
         }
       }

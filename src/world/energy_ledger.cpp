@@ -8,29 +8,34 @@ void EnergyLedger::start(const World& world) {
   *this = {};
   started = true;
   initialKinetic = world.kineticEnergy();
-  initialStored = stored = world.interactions().energy().stored;
+  std::array<ExactSum, 4> contacts = world.interactions().energy();
+  world.communicator().sum(contacts);
+  initialStored = stored = contacts[0].value();
 }
 
 void EnergyLedger::addStep(const World& world, const std::vector<Wall>& before) {
   const double dt = world.timeStep();
   const ParticleStore& p = world.particles();
-  Vec3 momentum = Vec3::Zero();
-  double twiceKinetic = 0.0;
+  std::array<ExactSum, 4> particles;  // the momentum's components, twice the translational energy
   for (std::size_t i = 0; i < p.size(); ++i) {
-    momentum += p.mass[i] * p.velocity[i];
-    twiceKinetic += p.mass[i] * p.velocity[i].squaredNorm();
+    const Vec3 momentum = p.mass[i] * p.velocity[i];
+    for (int d = 0; d < 3; ++d) particles[d].add(momentum(d));
+    particles[3].add(p.mass[i] * p.velocity[i].squaredNorm());
   }
+  world.communicator().sum(particles);
+  const Vec3 momentum(particles[0].value(), particles[1].value(), particles[2].value());
   gravity += dt * world.gravity().dot(momentum);
-  drag += dt * world.viscousDamping() * twiceKinetic;
+  drag += dt * world.viscousDamping() * particles[3].value();
   for (std::size_t w = 0; w < before.size(); ++w) {
     const Wall& now = world.walls()[w];
     bodies -= 0.5 * dt * ((before[w].force + now.force).dot(now.velocity) + (before[w].torque + now.torque).dot(now.angularVelocity));
   }
-  const ContactEnergy contacts = world.interactions().energy();
-  normal += contacts.normal;
-  damping += contacts.damping;
-  tangential += contacts.tangential;
-  stored = contacts.stored;
+  std::array<ExactSum, 4> contacts = world.interactions().energy();  // stored, normal, damping, tangential
+  world.communicator().sum(contacts);
+  stored = contacts[0].value();
+  normal += contacts[1].value();
+  damping += contacts[2].value();
+  tangential += contacts[3].value();
 }
 
 }  // namespace sqdem

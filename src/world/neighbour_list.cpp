@@ -14,8 +14,8 @@ bool NeighbourList::needsRebuild(const ParticleStore& particles) const {
 void NeighbourList::rebuild(ParticleStore& particles, const std::vector<double>& boundingRadius) {
   for (Vec3& x : particles.position) x = domain_.wrap(x);
   reference_ = particles.position;
-  pairs_ = search_ == BroadPhase::CellList ? cellListPairs(domain_, reference_, boundingRadius, skin_)
-                                           : aabbTreePairs(domain_, reference_, boundingRadius, skin_);
+  const ParticleCloud cloud{reference_, boundingRadius, particles.id};
+  pairs_ = search_ == BroadPhase::CellList ? cellListPairs(domain_, cloud, skin_) : aabbTreePairs(domain_, cloud, skin_);
   ++builds_;
 }
 

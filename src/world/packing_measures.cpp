@@ -35,9 +35,9 @@ const Wall* floorWall(const World& world) {
 }
 
 double solidVolume(const World& world) {
-  double v = 0.0;
-  for (const std::uint32_t s : world.particles().shape) v += world.shapes()[s].volume();
-  return v;
+  ExactSum v;
+  for (const std::uint32_t s : world.particles().shape) v.add(world.shapes()[s].volume());
+  return world.communicator().sum(v);
 }
 
 PlateMeasures measurePlate(const World& world, std::size_t plate) {
@@ -50,30 +50,38 @@ PlateMeasures measurePlate(const World& world, std::size_t plate) {
 }
 
 PackingMeasures measurePacking(const World& world) {
+  // Every sum exact and reduced over the ranks (communicator.hpp): the same bits at any
+  // decomposition.
+  const Communicator& ranks = world.communicator();
   const ParticleStore& p = world.particles();
   PackingMeasures m;
-  if (p.size() == 0) return m;
+  const long long count = ranks.sum(static_cast<long long>(p.size()));
+  if (count == 0) return m;
   const Domain& d = world.domain();
   const double bottom = d.lo.z();
-  double top = bottom, meanRadius = 0.0, volumeTotal = 0.0, volumeHeight = 0.0;
+  double top = bottom;
+  std::array<ExactSum, 3> sums;  // volume-equivalent radii, volumes, volume x height
   for (std::size_t i = 0; i < p.size(); ++i) {
     const Superquadric& s = world.shapes()[p.shape[i]];
     top = std::max(top, p.position[i].z() + s.boundingRadius());
-    meanRadius += s.volumeEquivalentRadius() / static_cast<double>(p.size());
-    volumeTotal += s.volume();
-    volumeHeight += s.volume() * (p.position[i].z() - bottom);
+    sums[0].add(s.volumeEquivalentRadius());
+    sums[1].add(s.volume());
+    sums[2].add(s.volume() * (p.position[i].z() - bottom));
   }
+  ranks.sum(sums);
+  top = ranks.max(top);
+  const double meanRadius = sums[0].value() / static_cast<double>(count), volumeTotal = sums[1].value();
   m.bedHeight = top - bottom;
   // A uniform bed of height H has its volume centroid at H/2.
-  const double equivalentHeight = 2.0 * volumeHeight / volumeTotal;
+  const double equivalentHeight = 2.0 * sums[2].value() / volumeTotal;
   double lo = bottom + 2.0 * meanRadius, hi = bottom + equivalentHeight - 2.0 * meanRadius;
   if (hi - lo < 2.0 * meanRadius) lo = bottom, hi = top;
-  double volume = 0.0;
+  ExactSum volume;
   for (std::size_t i = 0; i < p.size(); ++i) {
-    volume += volumeInSlab(world.shapes()[p.shape[i]], Pose{p.position[i], p.orientation[i]}, lo, hi);
+    volume.add(volumeInSlab(world.shapes()[p.shape[i]], Pose{p.position[i], p.orientation[i]}, lo, hi));
   }
   m.slabHeight = hi - lo;
-  m.solidFraction = volume / (d.length().x() * d.length().y() * m.slabHeight);
+  m.solidFraction = ranks.sum(volume) / (d.length().x() * d.length().y() * m.slabHeight);
 
   const Wall* floor = nullptr;
   const Wall* ceiling = nullptr;
@@ -89,32 +97,40 @@ PackingMeasures measurePacking(const World& world) {
     m.betweenWallsFraction = volumeTotal / m.stressVolume;
   }
   const auto radius = [&](std::uint32_t i) { return world.shapes()[p.shape[i]].volumeEquivalentRadius(); };
-  std::size_t yielded = 0;
+  std::array<ExactSum, 9> stress;  // l (x) f, row-major
+  std::array<long long, 2> counted{0, 0};  // yielded, acting
   for (const ContactView c : world.contacts()) {
     const Vec3 branch = c.onWall() ? Vec3(c.point() - p.position[c.a()]) : Vec3(p.position[c.b()] + c.shift() - p.position[c.a()]);
-    m.stress += branch * c.force().transpose();
-    yielded += c.normalLoad().yielded;
+    const Mat3 lf = branch * c.force().transpose();
+    for (int r = 0; r < 3; ++r) {
+      for (int col = 0; col < 3; ++col) stress[3 * r + col].add(lf(r, col));
+    }
+    counted[0] += c.normalLoad().yielded;
+    ++counted[1];
     const double smaller = c.onWall() ? radius(c.a()) : std::min(radius(c.a()), radius(c.b()));
     m.largestOverlapRatio = std::max(m.largestOverlapRatio, c.overlap() / smaller);
   }
-  const auto acting = static_cast<double>(world.contacts().size());
-  m.yieldedFraction = acting > 0.0 ? static_cast<double>(yielded) / acting : 0.0;
-  // Symmetrised from a copy: assigning m.stress from an expression that reads its transpose
-  // aliases in Eigen (each off-diagonal would read its already-overwritten twin).
-  const Mat3 sum = m.stress;
+  ranks.sum(stress);
+  ranks.sum(counted);
+  m.largestOverlapRatio = ranks.max(m.largestOverlapRatio);
+  m.yieldedFraction = counted[1] > 0 ? static_cast<double>(counted[0]) / static_cast<double>(counted[1]) : 0.0;
+  Mat3 sum;
+  for (int r = 0; r < 3; ++r) {
+    for (int col = 0; col < 3; ++col) sum(r, col) = stress[3 * r + col].value();
+  }
   m.stress = 0.5 * (sum + sum.transpose()) / m.stressVolume;
 
-  const std::vector<int> z = coordinationNumbers(world);
-  long total = 0, nonRattlerTotal = 0, nonRattlers = 0;
-  for (const int zi : z) {
-    total += zi;
+  std::array<long long, 3> z{0, 0, 0};  // contact ends, those of non-rattlers, non-rattlers
+  for (const int zi : coordinationNumbers(world)) {
+    z[0] += zi;
     if (zi >= 2) {
-      nonRattlerTotal += zi;
-      ++nonRattlers;
+      z[1] += zi;
+      ++z[2];
     }
   }
-  m.meanCoordination = static_cast<double>(total) / static_cast<double>(z.size());
-  m.meanCoordinationNonRattlers = nonRattlers ? static_cast<double>(nonRattlerTotal) / nonRattlers : 0.0;
+  ranks.sum(z);
+  m.meanCoordination = static_cast<double>(z[0]) / static_cast<double>(count);
+  m.meanCoordinationNonRattlers = z[2] ? static_cast<double>(z[1]) / static_cast<double>(z[2]) : 0.0;
   return m;
 }
 

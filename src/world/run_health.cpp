@@ -23,11 +23,10 @@ RunHealth::RunHealth(const World& world) {
   const ParticleStore& p = world.particles();
   const Vec3 g = world.gravity();
   const double fall = g.norm() > 0.0 ? (world.domain().length().cwiseProduct(g.cwiseAbs() / g.norm())).sum() : 0.0;
-  budget_ = world.kineticEnergy();
-  for (std::size_t i = 0; i < p.size(); ++i) budget_ += p.mass[i] * (g.norm() * fall + 0.5);
-  for (const ContactView c : world.contacts()) {
-    budget_ += 0.4 * std::abs(c.force().dot(c.normal())) * std::max(0.0, c.overlap());
-  }
+  ExactSum budget;
+  for (std::size_t i = 0; i < p.size(); ++i) budget.add(p.mass[i] * (g.norm() * fall + 0.5));
+  for (const ContactView c : world.contacts()) budget.add(0.4 * std::abs(c.force().dot(c.normal())) * std::max(0.0, c.overlap()));
+  budget_ = world.kineticEnergy() + world.communicator().sum(budget);
 }
 
 std::string RunHealth::afterStep(const World& world) {
@@ -37,7 +36,7 @@ std::string RunHealth::afterStep(const World& world) {
   if (++steps_ % checkEvery != 0) return {};
   char text[256];
   const double energy = world.kineticEnergy();
-  if (!finiteState(world.particles()) || !std::isfinite(energy)) {
+  if (world.communicator().any(!finiteState(world.particles())) || !std::isfinite(energy)) {
     return "non-finite particle state (NaN or inf in positions, velocities or forces)";
   }
   if (energy > 10.0 * budget()) {
@@ -45,7 +44,7 @@ std::string RunHealth::afterStep(const World& world) {
                   "and walls can supply", energy, budget());
     return text;
   }
-  const long long deep = world.statistics().deepOverlaps;
+  const long long deep = world.communicator().sum(world.statistics().deepOverlaps);
   deepStreak_ = deep > lastDeepOverlaps_ ? deepStreak_ + 1 : 0;
   lastDeepOverlaps_ = deep;
   if (deepStreak_ >= 10) {

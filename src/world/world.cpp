@@ -63,16 +63,15 @@ void World::setContactModel(std::uint32_t ma, std::uint32_t mb, const ContactMod
 std::size_t World::addParticle(std::uint32_t shape, std::uint32_t material, const Vec3& centre, const Quat& q) {
   const Superquadric& s = shapes_.at(shape);
   const double density = materials_.at(material).density;
-  boundingRadius_.push_back(s.boundingRadius());
   forcesCurrent_ = false;
-  return particles_.add(shape, material, centre, q, s.mass(density), s.principalMomentsOfInertia(density));
+  return particles_.add(shape, material, centre, q, s.mass(density), s.principalMomentsOfInertia(density),
+                        s.boundingRadius());
 }
 
 void World::buildCandidates() {
-  // Candidates in key order (a, then b with walls after particles, then a mesh's features): for
-  // each particle its pairs from the neighbour list (sorted by (a, b)), then the walls within
-  // reach; of a mesh wall, the features of the triangles within reach (the tree's, in the
-  // mesh's body frame; meshes are not periodic).
+  // Candidates in slot order: for each particle its pairs from the neighbour list (sorted by
+  // slots, oriented by ids), then the walls within reach; of a mesh wall, the features of the
+  // triangles within reach (the tree's, in the mesh's body frame; meshes are not periodic).
   const ParticleStore& p = particles_;
   std::vector<CandidateKey> next;
   next.reserve(neighbours_.pairs().size() + interactions_.store().size());
@@ -85,7 +84,7 @@ void World::buildCandidates() {
       // A cylinder across a periodic direction acts through its image nearest the particle
       // (the contact's shift); planes are parallel to the periodic directions.
       const Wall& wall = walls_[w];
-      const double reach = boundingRadius_[i] + range + skin;
+      const double reach = p.boundingRadius[i] + range + skin;
       if (wall.shape == WallShape::Mesh) {
         addMeshCandidates(i, w, reach, next);
         continue;
@@ -138,32 +137,47 @@ bool World::wallsMovedHalfSkin() const {
   return false;
 }
 
+void World::reduceWallLoads() {
+  for (std::size_t w = 0; w < walls_.size(); ++w) {
+    std::array<ExactSum, 10>& part = wallLoads_[w].part;
+    communicator_->sum(part);
+    Wall& wall = walls_[w];
+    for (int d = 0; d < 3; ++d) {
+      wall.force(d) = part[WallLoadSum::force + d].value();
+      wall.torque(d) = part[WallLoadSum::torque + d].value();
+      wall.elasticForce(d) = part[WallLoadSum::elasticForce + d].value();
+    }
+    wall.stiffness = part[WallLoadSum::stiffness].value();
+  }
+}
+
 void World::computeForces() {
   for (std::size_t k = 0; k < models_.size(); ++k) {
     if (!modelSet_[k]) throw std::logic_error("World: a material pair has no contact model");
   }
   const auto start = Clock::now();
   ParticleStore& p = particles_;
-  if (neighbours_.needsRebuild(p) || wallsMovedHalfSkin()) {
+  if (communicator_->any(neighbours_.needsRebuild(p)) || wallsMovedHalfSkin()) {
     if (reorderInterval_ > 0 && neighbours_.builds() % reorderInterval_ == 0) reorderAlongHilbertCurve();
     // Laws acting across a gap (roughness) widen every candidate's reach by their range.
     const double range = largestRange();
     if (range > 0.0) {
-      std::vector<double> reach(boundingRadius_);
+      std::vector<double> reach(p.boundingRadius);
       for (double& r : reach) r += 0.5 * range;
       neighbours_.rebuild(p, reach);
     } else {
-      neighbours_.rebuild(p, boundingRadius_);
+      neighbours_.rebuild(p, p.boundingRadius);
     }
     buildCandidates();
   }
 
   const auto contactsStart = Clock::now();
   timing_.broadPhase += seconds(contactsStart - start);
-  interactions_.compute(interactionScene(), statistics_);
+  interactions_.compute(interactionScene(), p.speedBound, statistics_);
   const auto reduction = Clock::now();
   timing_.contacts += seconds(reduction - contactsStart);
-  interactions_.reduce(p, gravity_, viscousDamping_, walls_);
+  interactions_.reduce(p, gravity_, viscousDamping_, walls_, wallLoads_);
+  reduceWallLoads();
   forcesCurrent_ = true;
   if (ledger_ && !ledger_->started) ledger_->start(*this);
   timing_.reduction += seconds(Clock::now() - reduction);
@@ -231,11 +245,12 @@ double World::servoVelocity(std::size_t w) const {
 }
 
 double World::kineticEnergy() const {
-  double e = 0.0;
+  ExactSum e;
   for (std::size_t i = 0; i < particles_.size(); ++i) {
-    e += particles_.translationalEnergy(i) + particles_.rotationalEnergy(i);
+    e.add(particles_.translationalEnergy(i));
+    e.add(particles_.rotationalEnergy(i));
   }
-  return e;
+  return communicator_->sum(e);
 }
 
 double World::rayleighTimeStep() const {
@@ -246,7 +261,7 @@ double World::rayleighTimeStep() const {
     const Vec3 h = shapes_[particles_.shape[i]].halfExtents();
     dt = std::min(dt, sqdem::rayleighTimeStep(h.minCoeff(), m.density, G, m.poissonRatio));
   }
-  return dt;
+  return communicator_->min(dt);
 }
 
 double World::hertzTimeStep(double speed, double stepsPerCollision) const {
@@ -256,7 +271,7 @@ double World::hertzTimeStep(double speed, double stepsPerCollision) const {
     const double Estar = model(particles_.material[i], particles_.material[i]).effectiveModulus;
     dt = std::min(dt, hertzCollisionTime(0.5 * m, 0.5 * R, Estar, speed) / stepsPerCollision);
   }
-  return dt;
+  return communicator_->min(dt);
 }
 
 }  // namespace sqdem

@@ -1,5 +1,6 @@
 // Re-ordering the particle slots along a Hilbert curve (spatial_order.hpp) so that neighbours
-// in space are neighbours in memory. Contacts follow their particles (Interactions::renumber).
+// in space are neighbours in memory. Contacts follow their particles (Interactions::followSlots);
+// their keys and so every result stay as they were.
 
 #include "sqdem/math/permutation.hpp"
 #include "sqdem/world/spatial_order.hpp"
@@ -13,9 +14,7 @@ void World::reorderAlongHilbertCurve() {
   for (std::uint32_t k = 0; k < order.size(); ++k) slotOf[order[k]] = k;
 
   ParticleStore::forEachArray(particles_, [&](auto& array) { permute(array, order); });
-  permute(boundingRadius_, order);
-
-  interactions_.renumber(slotOf, interactionScene());
+  interactions_.followSlots(slotOf);
   neighbours_.invalidate();
 }
 

@@ -6,16 +6,31 @@
 #include <algorithm>
 #include <cmath>
 
-#include "sqdem/world/checkpoint_file.hpp"
+#include "sqdem/archive/checkpoint_file.hpp"
 #include "sqdem/world/world.hpp"
 
 namespace sqdem {
+namespace {
+
+/// The payload's version: raised whenever writeState writes other records or in another order.
+constexpr std::uint64_t stateVersion = 11;
+
+}  // namespace
+
+std::uint64_t World::stateFingerprint() {
+  Fingerprint f;
+  for (const std::size_t size : {sizeof(Wall), sizeof(ContactStatistics), sizeof(CandidatePair), sizeof(Vec3),
+                                 sizeof(Quat), sizeof(Vec4), sizeof(ContactStatus), sizeof(NormalHistory),
+                                 sizeof(NormalLoad), sizeof(ContactEnergy), sizeof(EnergyLedger)}) {
+    f(static_cast<std::uint64_t>(size));
+  }
+  return f(stateVersion).value();
+}
 
 void World::writeState(CheckpointWriter& out) const {
   out.put(static_cast<std::uint64_t>(particles_.size()));
   out.put(static_cast<std::uint64_t>(walls_.size()));
   ParticleStore::forEachArray(particles_, [&](const auto& array) { out.putVector(array); });
-  out.putVector(boundingRadius_);
   out.putVector(walls_);
   out.putVector(wallReference_);
   interactions_.writeState(out);
@@ -48,17 +63,16 @@ void World::readState(CheckpointReader& in) {
     in.getVector(array, n);
     requireIntact(array.size() == n, "per-particle array length");
   });
-  std::vector<double> boundingRadius;
   std::vector<Wall> wallRecords;
   std::vector<Vec3> wallReference, reference;
   std::vector<CandidatePair> candidates;
   int builds = 0;
-  in.getVector(boundingRadius, n);
   in.getVector(wallRecords, walls);
   in.getVector(wallReference, walls);
-  requireIntact(boundingRadius.size() == n && wallRecords.size() == walls, "array lengths");
+  requireIntact(wallRecords.size() == walls, "array lengths");
   for (std::size_t i = 0; i < n; ++i) {
     requireIntact(restored.shape[i] < shapes_.size() && restored.material[i] < materials_.size(), "shape or material index");
+    requireIntact(restored.boundingRadius[i] == shapes_[restored.shape[i]].boundingRadius(), "bounding radius");
   }
   for (const Wall& w : wallRecords) {
     requireIntact(w.material < materials_.size(), "wall material index");
@@ -67,7 +81,7 @@ void World::readState(CheckpointReader& in) {
     requireIntact(std::abs(w.orientation.squaredNorm() - 1.0) < 1e-9, "wall orientation");
   }
   Interactions interactions = Interactions::readState(
-      in, {restored, shapes_, boundingRadius, wallRecords, meshes_, models_, materials_.size(), neighbours_.skin(), dt_, detector_,
+      in, {restored, shapes_, wallRecords, meshes_, models_, materials_.size(), neighbours_.skin(), dt_, detector_,
            ledger_.has_value()});
   in.getVector(reference, n);
   in.getVector(candidates, anyLength);
@@ -100,7 +114,6 @@ void World::readState(CheckpointReader& in) {
   requireIntact(builds >= 0 && std::isfinite(dt) && dt > 0.0 && std::isfinite(time), "counters");
 
   particles_ = std::move(restored);
-  boundingRadius_ = std::move(boundingRadius);
   walls_ = std::move(wallRecords);
   wallReference_ = std::move(wallReference);
   interactions_ = std::move(interactions);

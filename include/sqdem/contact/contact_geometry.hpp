@@ -1,6 +1,6 @@
 #pragma once
-// ContactGeometry: everything the contact laws may know about a contact (DESIGN.md §2:
-// geometry and mechanics meet only here).
+// ContactGeometry: everything the contact laws may know about a contact (docs/architecture.md,
+// "Layers": geometry and mechanics meet only here).
 
 #include <cstdint>
 

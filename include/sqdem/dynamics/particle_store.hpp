@@ -1,6 +1,8 @@
 #pragma once
-// Structure-of-arrays particle state (DESIGN.md §3). Index i is a particle's slot; `id` is its
-// permanent number (slots may be re-ordered, ids never change).
+// Structure-of-arrays particle state (docs/architecture.md, "Stores"). Index i is a particle's
+// slot in this process; `id` is its global number, the same in every process and for the whole
+// run (slots are re-ordered and, across ranks, particles migrate; ids never change). Everything
+// kept of a particle lives here, shape and material as indices into the scene's tables.
 //
 // Rotation uses the NO_SQUISH variables of Miller et al. (J. Chem. Phys. 116, 8649, 2002): the
 // unit quaternion q (body -> world) and its conjugate momentum p = 2 q ⊗ (0, L_body), a
@@ -28,6 +30,10 @@ struct ParticleStore {
   std::vector<Vec3> torque;             ///< world frame (N m), reset every step
   std::vector<double> mass;             ///< (kg)
   std::vector<Vec3> inertia;            ///< principal moments in the body frame (kg m^2)
+  std::vector<double> boundingRadius;   ///< of its shape (m)
+  /// |v| + |w| R_bound (m/s), how fast any point of it moves, this step; kept only when a scene's
+  /// detectors cull separated pairs by it (Interactions::compute), 0 otherwise.
+  std::vector<double> speedBound;
 
   std::size_t size() const { return position.size(); }
 
@@ -47,11 +53,13 @@ struct ParticleStore {
     f(store.torque);
     f(store.mass);
     f(store.inertia);
+    f(store.boundingRadius);
+    f(store.speedBound);
   }
 
-  /// Appends a particle at rest-free initial state; returns its slot.
+  /// Appends a particle at rest, its id the next one; returns its slot.
   std::size_t add(std::uint32_t shapeIndex, std::uint32_t materialIndex, const Vec3& centre, const Quat& q,
-                  double particleMass, const Vec3& principalInertia);
+                  double particleMass, const Vec3& principalInertia, double bound);
 
   /// Sets the angular velocity (world frame) of particle i, i.e. its conjugate momentum.
   void setAngularVelocity(std::size_t i, const Vec3& omegaWorld);

@@ -1,5 +1,5 @@
 #pragma once
-// A wall: a kinematic body (DESIGN.md §2) whose surface is an infinite plane, the outside of a
+// A wall: a kinematic body (docs/architecture.md, "Layers") whose surface is an infinite plane, the outside of a
 // cylinder (a roller) or a triangle mesh (an STL file: mesh_features.hpp, held by the World),
 // moved with a prescribed velocity or, a plane, under servo control; a cylinder may also spin
 // about its axis and a mesh rotate about its origin. The particles' forces and torques on it

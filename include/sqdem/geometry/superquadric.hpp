@@ -93,7 +93,7 @@ class Superquadric {
 };
 
 /// R_vol_ref = sqrt(R_vol,A R_vol,B) (m): the pair's length scale, used for the detector's
-/// tolerance and for the radius cap (DESIGN.md §1).
+/// tolerance and for the radius cap (docs/contact_laws.md, "Conventions").
 inline double referenceVolumeRadius(const Superquadric& A, const Superquadric& B) {
   return std::sqrt(A.volumeEquivalentRadius() * B.volumeEquivalentRadius());
 }

@@ -1,6 +1,6 @@
 #pragma once
 // The contact law of a pair of materials in the engine: a composition chosen once per pair type
-// (DESIGN.md §2) and evaluated per contact from ContactGeometry and the relative motion.
+// (docs/architecture.md, "Layers") and evaluated per contact from ContactGeometry and the relative motion.
 //
 //   normal          one registered normal law (law_registry.hpp: elliptic Hertz, volume-sphere
 //                   Hertz, Greenwood-Williamson roughness, Becker-Kamlah, Haervig's simplified

@@ -1,9 +1,13 @@
 #pragma once
-// The contact store (DESIGN.md §2-3): every candidate pair of the current neighbour list, in key
-// order (a, then b, walls after particles), as a structure of arrays so that a kernel touches
-// only the fields it reads and writes:
-//   identity     a, b (b = particle slot, or wallFlag | wall index), b's periodic shift, the
-//                feature of a mesh wall b touches (mesh_features.hpp; 0 for other bodies)
+// The contact store (docs/architecture.md, "Stores"): every candidate pair of the current
+// neighbour list, as a structure of arrays so that a kernel touches only the fields it reads and
+// writes:
+//   identity     idA, idB: the bodies' global ids (A the lower; B a particle id, or
+//                wallFlag | wall index), the feature of a mesh wall B touches (mesh_features.hpp;
+//                0 for other bodies): the contact's key, the same in every process and however
+//                the particles are stored
+//   where        a, b: the bodies' slots in this process's particle store (b = wallFlag | wall
+//                for a wall), B's periodic shift: found again at every candidate build
 //   warm start   status, both surface points in their body frames, the separation bound
 //   geometry     normal, overlap, contact point (the reduction's lever arm)
 //   histories    tangential spring, the normal law's record, the rolling displacement
@@ -15,7 +19,8 @@
 // only withCurvatureCache, the energy only withEnergy (a scene without rolling resistance,
 // caching or an energy ledger stores none of them).
 // Curvatures themselves are not stored: the fused kernels hand them from the detector to the
-// law within one contact.
+// law within one contact. The store is kept in the order the candidates were found (near
+// slots together, for the kernels' memory traffic); key order is Interactions' index of it.
 
 #include <cstdint>
 #include <tuple>
@@ -48,7 +53,8 @@ struct ContactEnergy {
   double tangential = 0.0;  ///< by the tangential force and the rolling moment: springs and sliding
 };
 
-/// A contact's place in key order: the pair (a, then b), then the mesh feature.
+/// A contact's place in key order: the pair of ids (A, then B: walls after particles), then the
+/// mesh feature.
 struct ContactKey {
   std::uint64_t pair = 0;
   std::uint32_t feature = 0;
@@ -56,9 +62,10 @@ struct ContactKey {
 };
 
 struct ContactStore {
-  std::vector<std::uint32_t> a, b;
-  std::vector<Vec3> shift;  ///< periodic image offset of b (m)
-  std::vector<std::uint32_t> feature;  ///< of a mesh wall (0 otherwise)
+  std::vector<std::uint32_t> idA, idB;  ///< global ids (idB: wallFlag | wall for a wall)
+  std::vector<std::uint32_t> feature;   ///< of a mesh wall (0 otherwise)
+  std::vector<std::uint32_t> a, b;      ///< slots in this process (b: wallFlag | wall for a wall)
+  std::vector<Vec3> shift;              ///< periodic image offset of B (m)
 
   std::vector<ContactStatus> status;  ///< of the last solve
   std::vector<Vec3> localA, localB;   ///< surface points in A's and B's body frames (m)
@@ -86,7 +93,7 @@ struct ContactStore {
 
   std::size_t size() const { return a.size(); }
   bool onWall(std::size_t k) const { return (b[k] & wallFlag) != 0; }
-  ContactKey key(std::size_t k) const { return {(std::uint64_t{a[k]} << 32) | b[k], feature[k]}; }
+  ContactKey key(std::size_t k) const { return {(std::uint64_t{idA[k]} << 32) | idB[k], feature[k]}; }
 
   /// The arrays a contact carries from one step to the next (warm start, geometry, histories):
   /// what candidate rebuilds carry over.
@@ -99,10 +106,12 @@ struct ContactStore {
   /// re-ordering and resizing use, so a new field cannot be forgotten there.
   template <typename Store, typename F>
   static void forEachArray(Store& s, F&& f) {
+    f(s.idA);
+    f(s.idB);
+    f(s.feature);
     f(s.a);
     f(s.b);
     f(s.shift);
-    f(s.feature);
     std::apply([&](auto... member) { (f(s.*member), ...); }, stateArrays);
     f(s.acting);
     f(s.energy);
@@ -137,16 +146,12 @@ struct ContactStore {
   }
   /// Room for n contacts in every kept array.
   void reserve(std::size_t n);
-  /// Appends a fresh candidate (no geometry, no history).
-  void add(std::uint32_t bodyA, std::uint32_t bodyB, const Vec3& bShift, std::uint32_t bFeature = 0);
+  /// Appends a fresh candidate (no geometry, no history): its key, its bodies' slots and B's shift.
+  void add(const ContactKey& key, std::uint32_t slotA, std::uint32_t slotB, const Vec3& bShift);
   /// Forgets contact k's geometry and history (it is solved cold next time).
   void reset(std::size_t k);
   /// Copies contact `from` of `other` (same layout) into contact k: every state array.
   void carryOver(std::size_t k, const ContactStore& other, std::size_t from);
-  /// The store re-ordered: contact k of the result is contact order[k] of this one.
-  void permute(const std::vector<std::uint32_t>& order);
-  /// Contact k seen with A and B exchanged (the pair's slots changed order).
-  void exchangeBodies(std::size_t k);
 };
 
 /// Read access to one contact of a store (outputs, tests).
@@ -154,9 +159,10 @@ class ContactView {
  public:
   ContactView(const ContactStore& store, std::uint32_t k) : s_(&store), k_(k) {}
 
-  std::uint32_t a() const { return s_->a[k_]; }
+  std::uint32_t a() const { return s_->a[k_]; }  ///< slot of A
   /// Particle slot of B (only for a particle pair).
   std::uint32_t b() const { return s_->b[k_]; }
+  ContactKey key() const { return s_->key(k_); }
   bool onWall() const { return s_->onWall(k_); }
   std::uint32_t wall() const { return s_->b[k_] & ~wallFlag; }
   std::uint32_t feature() const { return s_->feature[k_]; }  ///< of a mesh wall

@@ -1,12 +1,13 @@
 #pragma once
-// The interaction layer (DESIGN.md §2-3): the contact store, the contacts grouped by pair type
-// (shape-class pair x the material pair's contact model), one fused detect-then-law kernel per
-// group with the law chosen once per group (no per-contact dispatch), and the reduction of the
-// contacts' loads to particles and walls in a fixed order.
+// The interaction layer (docs/architecture.md, "Layers", "Identity"): the contact store, the contacts
+// grouped by pair type (shape-class pair x the material pair's contact model), one fused
+// detect-then-law kernel per group with the law chosen once per group (no per-contact
+// dispatch), and the reduction of the contacts' loads to particles and walls.
 //
-// Determinism: every contact is computed into its own slot of the store; each particle then sums
-// its contacts in key order (the order of a serial sweep over the key-ordered store), and walls
-// sum theirs in key order, so results do not depend on the thread count or the grouping.
+// Determinism: every contact is computed into its own slot of the store from its bodies, A the
+// lower id; each particle then sums its contacts in key order (ids, not slots), and walls sum
+// theirs exactly (ExactSum), so results depend neither on the thread count, nor on the slots
+// (re-ordering), nor, across ranks, on the decomposition.
 
 #include <array>
 #include <cstdint>
@@ -21,6 +22,7 @@
 #include "sqdem/interaction/contact_model.hpp"
 #include "sqdem/interaction/contact_store.hpp"
 #include "sqdem/interaction/pair_kind.hpp"
+#include "sqdem/math/exact_sum.hpp"
 
 namespace sqdem {
 
@@ -59,7 +61,6 @@ struct DetectorControl {
 struct InteractionScene {
   const ParticleStore& particles;
   const std::vector<Superquadric>& shapes;
-  const std::vector<double>& boundingRadius;  ///< per particle slot (m)
   const std::vector<Wall>& walls;
   const std::vector<MeshFeatures>& meshes;  ///< of the mesh walls (Wall::mesh)
   /// Contact model of material pair (i, j) at models[i * materialCount + j] (symmetric).
@@ -71,12 +72,20 @@ struct InteractionScene {
   bool energy = false;  ///< the contacts account their energy (ContactEnergy)
 };
 
-/// A candidate pair for Interactions::setCandidates: b a particle slot or wallFlag | wall, and
-/// a mesh wall's feature.
+/// A candidate pair for Interactions::setCandidates: slots a and b (a particle slot, or
+/// wallFlag | wall), oriented by id (for two particles, id[a] < id[b]), B seen at its position
+/// + shift, and a mesh wall's feature.
 struct CandidateKey {
   std::uint32_t a = 0, b = 0;
   Vec3 shift = Vec3::Zero();
   std::uint32_t feature = 0;
+};
+
+/// A wall's load from this process's contacts, every part an exact sum: the shares of all
+/// processes add up to the same bits in any decomposition (the World reduces them).
+struct WallLoadSum {
+  static constexpr int force = 0, torque = 3, elasticForce = 6, stiffness = 9;  ///< offsets in part
+  std::array<ExactSum, 10> part;  ///< force (N), torque about the reference (N m), elastic force (N), stiffness (N/m)
 };
 
 /// An empty store with the optional arrays the scene's contact models need.
@@ -84,20 +93,22 @@ ContactStore emptyStore(const InteractionScene& scene);
 
 class Interactions {
  public:
-  /// Replaces the candidates (sorted by ContactKey, unique), carrying over the geometry and histories
-  /// of pairs that persist, and regroups them.
+  /// Replaces the candidates (unique keys, in any order: the store keeps theirs), carrying over
+  /// the geometry and histories of pairs that persist (matched by key), and regroups them.
   void setCandidates(const std::vector<CandidateKey>& candidates, const InteractionScene& scene);
   /// Keeps the store's optional arrays (rolling, curvature cache) to what the scene's contact
   /// models need, after a model changed: arrays added fresh, arrays no longer needed dropped.
   void fitStore(const InteractionScene& scene);
-  /// Detection and laws of every candidate; adds to the statistics.
-  void compute(const InteractionScene& scene, ContactStatistics& statistics);
-  /// Per particle: F = m (g - c v) plus its contacts' loads, and the torques; per wall the
-  /// force, its elastic part and stiffness; the list of force-carrying contacts.
-  void reduce(ParticleStore& particles, const Vec3& gravity, double drag, std::vector<Wall>& walls);
-  /// Follows a re-ordering of the particle slots (new slot of old slot i = slotOf[i]): keys are
-  /// remapped, pairs whose slots change order are seen from the other body, order restored.
-  void renumber(const std::vector<std::uint32_t>& slotOf, const InteractionScene& scene);
+  /// Detection and laws of every candidate; the particles' speed bounds (ParticleStore) are
+  /// computed first when a group culls by them; adds to the statistics.
+  void compute(const InteractionScene& scene, std::vector<double>& speedBound, ContactStatistics& statistics);
+  /// Per particle: F = m (g - c v) plus its contacts' loads, and the torques; per wall this
+  /// process's share of its load (walls.size() sums, reset here); the list of force-carrying
+  /// contacts.
+  void reduce(ParticleStore& particles, const Vec3& gravity, double drag, const std::vector<Wall>& walls,
+              std::vector<WallLoadSum>& wallLoads);
+  /// Follows a re-ordering of the particle slots (new slot of old slot i = slotOf[i]).
+  void followSlots(const std::vector<std::uint32_t>& slotOf);
 
   /// The contacts that carried force in the last computation, in key order.
   auto acting() const {
@@ -105,10 +116,11 @@ class Interactions {
   }
   const ContactStore& store() const { return store_; }
   std::size_t actingCount() const { return interacting_.size(); }
-  /// The contacts' ContactEnergy of the last computation summed in key order (a store made
-  /// withEnergy; zero otherwise).
-  ContactEnergy energy() const;
-  /// Bytes held (store, groups, particle index, per-particle speed bounds).
+  /// This process's share of the contacts' ContactEnergy of the last computation, exact sums
+  /// of its fields in their order (stored, normal, damping, tangential); zero without a store
+  /// made withEnergy.
+  std::array<ExactSum, 4> energy() const;
+  /// Bytes held (store, groups, key order, particle index).
   std::size_t bytes() const;
 
   void writeState(CheckpointWriter& out) const;
@@ -124,17 +136,18 @@ class Interactions {
     std::vector<std::uint32_t> members;  ///< contact indices, ascending
   };
   void regroup(const InteractionScene& scene);
+  /// keyOrder_ from the store's keys.
+  void sortKeys();
   void indexInvolvement(std::size_t particleCount);
 
   ContactStore store_;
   std::vector<Group> groups_;
+  std::vector<std::uint32_t> keyOrder_;  ///< the contacts in key order
   static constexpr std::uint32_t bodyBFlag = 0x80000000u;  ///< in involvement_: the particle is body B
-  std::vector<std::uint32_t> involvementStart_;  ///< particle i's contacts: involvement_[start[i], start[i+1])
+  /// Particle i's contacts, in key order: involvement_[start[i], start[i+1]).
+  std::vector<std::uint32_t> involvementStart_;
   std::vector<std::uint32_t> involvement_;       ///< contact index, | bodyBFlag where i is body B
-  std::vector<std::uint32_t> interacting_;       ///< indices of the force-carrying contacts
-  /// Per particle, this step: |v| + |w| R_bound (m/s), how fast any point of it moves (a
-  /// separated pair's gap bound shrinks by dt times the sum of its two).
-  std::vector<double> speedBound_;
+  std::vector<std::uint32_t> interacting_;       ///< the force-carrying contacts, in key order
 };
 
 }  // namespace sqdem

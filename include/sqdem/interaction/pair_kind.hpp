@@ -1,5 +1,5 @@
 #pragma once
-// The shape-class pair of a contact: which detector path it takes (DESIGN.md §2-3). Chosen once
+// The shape-class pair of a contact: which detector path it takes (docs/architecture.md, "A step"). Chosen once
 // per candidate from the two shapes (spheres are ellipsoids are superquadrics: the most special
 // class both bodies belong to).
 

@@ -1,6 +1,6 @@
 #pragma once
 // STL files (ASCII or binary) as triangle meshes, read and repaired with CGAL (its own library
-// target: CGAL's headers and its -frounding-math stay out of the engine, DESIGN.md §4):
+// target: CGAL's headers and its -frounding-math stay out of the engine, docs/architecture.md, "Layers"):
 //   read        CGAL::IO::read_STL (ASCII or binary, told apart by the content)
 //   repair      zero-area triangles dropped (collinear corners, an exact predicate), then
 //               Polygon_mesh_processing::repair_polygon_soup: duplicate vertices merged (STL

@@ -1,5 +1,5 @@
 #pragma once
-// What every normal contact law is (DESIGN.md §2, "a law is a value type"): its parameters,
+// What every normal contact law is (docs/architecture.md, "Layers": a law is a value type): its parameters,
 // read and validated once from a LawInput (law_registry.hpp); a History record of its own,
 // trivially copyable, whose all-zero bytes are a fresh contact's; and three functions:
 //   force(contact, overlap, history)  the rate-independent normal response at this overlap,

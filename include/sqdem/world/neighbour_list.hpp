@@ -1,5 +1,5 @@
 #pragma once
-// Broad phase with a Verlet skin (DESIGN.md §3). Candidate pairs are particles whose bounding
+// Broad phase with a Verlet skin (docs/architecture.md, "A step", "Identity"). Candidate pairs are particles whose bounding
 // spheres come closer than the skin; the list stays valid until some particle has moved more
 // than half the skin since the build. The pairs are found by one of two searches, chosen per
 // scene (`broad_phase`):
@@ -8,7 +8,10 @@
 //   AabbTree  FCL's dynamic AABB tree of the skin-inflated bounding spheres, aabb_tree_pairs.cpp
 //             (own CMake target: FCL's headers stay out of the engine)
 // Both return the same sorted list; periodic images in any of x, y, z (the nearest image of a
-// pair when the box is narrower than three reaches).
+// pair when the box is narrower than three reaches). Both test a pair by a distance that is the
+// same seen from either particle (candidateDistanceSquared) and orient it by id (oriented), so
+// that whether a pair is a candidate, and which image it takes, depends neither on the slots
+// nor on which process finds it.
 
 #include <cstdint>
 #include <vector>
@@ -18,20 +21,42 @@
 
 namespace sqdem {
 
-/// A candidate pair: particle b is seen at position[b] + shift (its periodic image) from a; a < b.
+/// A candidate pair of slots: particle b is seen at position[b] + shift (its periodic image)
+/// from a; id[a] < id[b].
 struct CandidatePair {
   std::uint32_t a, b;
   Vec3 shift;
 };
 
+/// What the searches read: positions (wrapped into the periodic directions), bounding radii
+/// (m) and ids, per slot.
+struct ParticleCloud {
+  const std::vector<Vec3>& position;
+  const std::vector<double>& radius;
+  const std::vector<std::uint32_t>& id;
+};
+
+/// Slots i and j, j seen at position[j] + shift from i, as a pair oriented by id.
+inline CandidatePair oriented(const ParticleCloud& cloud, std::uint32_t i, std::uint32_t j, const Vec3& shift) {
+  return cloud.id[i] < cloud.id[j] ? CandidatePair{i, j, shift} : CandidatePair{j, i, Vec3(-shift)};
+}
+/// The squared centre distance (m^2) of slots i and j, j seen at position[j] + shift from i:
+/// the same bits seen from j (x_i - x_j - s is exactly -(x_j - x_i + s)), so the test needs no
+/// orientation and gives every process the same answer.
+inline double candidateDistanceSquared(const ParticleCloud& cloud, std::uint32_t i, std::uint32_t j, const Vec3& shift) {
+  return ((cloud.position[j] - cloud.position[i]) + shift).squaredNorm();
+}
+/// Whether the bounding spheres of slots i and j at that distance come closer than the skin.
+inline bool withinSkin(const ParticleCloud& cloud, std::uint32_t i, std::uint32_t j, double distanceSquared, double skin) {
+  const double reach = cloud.radius[i] + cloud.radius[j] + skin;
+  return distanceSquared < reach * reach;
+}
+
 enum class BroadPhase { CellList, AabbTree };
 
-/// The pairs (a < b, sorted by (a, b)) whose bounding spheres, radius[i], come closer than skin
-/// (m) at the given positions (wrapped into the periodic directions).
-std::vector<CandidatePair> cellListPairs(const Domain& domain, const std::vector<Vec3>& position,
-                                         const std::vector<double>& radius, double skin);
-std::vector<CandidatePair> aabbTreePairs(const Domain& domain, const std::vector<Vec3>& position,
-                                         const std::vector<double>& radius, double skin);
+/// The pairs (oriented by id, sorted by (a, b)) whose bounding spheres come closer than skin (m).
+std::vector<CandidatePair> cellListPairs(const Domain& domain, const ParticleCloud& cloud, double skin);
+std::vector<CandidatePair> aabbTreePairs(const Domain& domain, const ParticleCloud& cloud, double skin);
 
 class NeighbourList {
  public:

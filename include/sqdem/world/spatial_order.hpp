@@ -1,5 +1,5 @@
 #pragma once
-// Spatial re-ordering for memory locality (DESIGN.md §3): the order of points along a Hilbert
+// Spatial re-ordering for memory locality (docs/architecture.md, "Identity"): the order of points along a Hilbert
 // curve (CGAL's hilbert_sort with the deterministic median policy). CGAL stays in its own CMake
 // target (spatial_order.cpp): its -frounding-math must not reach the physics code.
 

@@ -1,20 +1,23 @@
 #pragma once
 // The World: particles, shapes, materials, the interaction table, walls, the persistent contact
-// list and the time step loop (DESIGN.md §2):
+// list and the time step loop (docs/architecture.md, "A step"):
 //   half kick, drift (and walls move) -> broad phase (neighbour list and candidate contacts,
 //   rebuilt when particles or walls moved half the skin) -> narrow phase (detector, warm-started
 //   from the contact's history) -> contact law -> forces reduced per particle -> half kick.
 // Contacts live in the interaction layer (interactions.hpp): computed in parallel (OpenMP) into
 // their own slots, summed per particle in key order, so results do not depend on the number of
-// threads.
+// threads. Every global quantity (wall loads, kinetic energy, the rebuild decision, time steps)
+// goes through the world's Communicator (communicator.hpp), a no-op in one process.
 
 #include <array>
 #include <cstdint>
 #include <iosfwd>
+#include <memory>
 #include <optional>
 #include <ranges>
 #include <vector>
 
+#include "sqdem/distributed/communicator.hpp"
 #include "sqdem/dynamics/particle_store.hpp"
 #include "sqdem/dynamics/wall.hpp"
 #include "sqdem/geometry/superquadric.hpp"
@@ -69,10 +72,14 @@ class World {
   std::uint32_t addMesh(MeshFeatures mesh);
   const std::vector<MeshFeatures>& meshes() const { return meshes_; }
 
+  /// The ranks this world's particles are divided between (default: one process).
+  void setCommunicator(std::shared_ptr<const Communicator> communicator) { communicator_ = std::move(communicator); }
+  const Communicator& communicator() const { return *communicator_; }
+
   void setGravity(const Vec3& g) { gravity_ = g; }
   const Vec3& gravity() const { return gravity_; }
   /// Re-order the particle slots along a Hilbert curve every `rebuilds` neighbour-list builds
-  /// (0: never). Results then differ from an unordered run by round-off only (summation order).
+  /// (0: never). Results do not change: contacts and sums follow ids, not slots.
   void setReorderInterval(int rebuilds) { reorderInterval_ = rebuilds; }
   /// Re-orders now (world_reorder.cpp); ids, contacts and their histories follow the particles.
   void reorderAlongHilbertCurve();
@@ -119,6 +126,9 @@ class World {
   /// materials, laws) come from the scene. Restoring into a world built from the same scene
   /// continues bit for bit (world_state.cpp).
   void writeState(CheckpointWriter& out) const;
+  /// The fingerprint of writeState's payload (its version and the byte layout of its raw
+  /// records): a checkpoint's build stamp (checkpoint_file.hpp).
+  static std::uint64_t stateFingerprint();
   /// Restores a state written by writeState; throws CheckpointError (checkpoint_file.hpp) if it
   /// does not match this world or any count or index is out of range. The world is unchanged
   /// when it throws.
@@ -143,13 +153,15 @@ class World {
   const ContactModel& model(std::uint32_t ma, std::uint32_t mb) const { return models_[ma * materials_.size() + mb]; }
   /// What the interaction layer reads of this world.
   InteractionScene interactionScene() const {
-    return {particles_, shapes_, boundingRadius_, walls_, meshes_, models_, materials_.size(), neighbours_.skin(),
-            dt_,        detector_, ledger_.has_value()};
+    return {particles_, shapes_, walls_, meshes_, models_, materials_.size(), neighbours_.skin(), dt_, detector_,
+            ledger_.has_value()};
   }
   /// The candidate list from the neighbour list and the walls within reach, carrying the
   /// histories of persisting pairs; kept until the next rebuild (particles or walls moved more
   /// than half the skin), so steps in between copy no contact records.
   void buildCandidates();
+  /// The walls' loads: this process's shares (wallLoads_) summed over the ranks.
+  void reduceWallLoads();
   /// Mesh wall w's features within `reach` (m) of particle i, ascending.
   void addMeshCandidates(std::uint32_t i, std::uint32_t w, double reach, std::vector<CandidateKey>& next) const;
   bool wallsMovedHalfSkin() const;
@@ -162,8 +174,8 @@ class World {
   Domain domain_;
   NeighbourList neighbours_;
   ParticleStore particles_;
-  std::vector<double> boundingRadius_;
   std::vector<Wall> walls_;
+  std::vector<WallLoadSum> wallLoads_;
   std::vector<MeshFeatures> meshes_;
   std::vector<MeshTree> meshTrees_;       ///< meshes_[i]'s candidate search
   std::vector<Vec3> wallReference_;       ///< wall points at the last candidate build
@@ -174,6 +186,7 @@ class World {
   double viscousDamping_ = 0.0;
   DetectorControl detector_;
   std::optional<EnergyLedger> ledger_;
+  std::shared_ptr<const Communicator> communicator_ = std::make_shared<SerialCommunicator>();
   int reorderInterval_ = 0;
   double dt_ = 0.0, time_ = 0.0;
   bool forcesCurrent_ = false;

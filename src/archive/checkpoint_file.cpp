@@ -1,4 +1,4 @@
-#include "sqdem/world/checkpoint_file.hpp"
+#include "sqdem/archive/checkpoint_file.hpp"
 
 #include <boost/crc.hpp>
 
@@ -6,8 +6,7 @@
 #include <fstream>
 #include <iterator>
 
-#include "sqdem/io/atomic_file.hpp"
-#include "sqdem/world/world.hpp"
+#include "sqdem/archive/atomic_file.hpp"
 
 namespace sqdem {
 namespace {
@@ -53,28 +52,18 @@ Fingerprint& Fingerprint::operator()(std::string_view s) {
   return bytes(s.data(), s.size());
 }
 
-std::uint64_t buildFingerprint() {
-  Fingerprint f;
-  for (const std::size_t size : {sizeof(Wall), sizeof(ContactStatistics), sizeof(CandidatePair), sizeof(Vec3),
-                                 sizeof(Quat), sizeof(Vec4), sizeof(ContactStatus), sizeof(NormalHistory),
-                                 sizeof(NormalLoad), sizeof(ContactEnergy), sizeof(EnergyLedger)}) {
-    f(static_cast<std::uint64_t>(size));
-  }
-  return f(static_cast<std::uint64_t>(formatVersion)).value();
-}
-
-void writeCheckpointFile(const std::filesystem::path& path, std::uint64_t sceneFingerprint, std::string_view payload) {
+void writeCheckpointFile(const std::filesystem::path& path, const CheckpointStamp& stamp, std::string_view payload) {
   CheckpointWriter header;
   header.put(magic);
   header.put(formatVersion);
-  header.put(buildFingerprint());
-  header.put(sceneFingerprint);
+  header.put(stamp.build);
+  header.put(stamp.scene);
   header.put(static_cast<std::uint64_t>(payload.size()));
   header.put(crc32(payload));
   writeFileAtomically(path, header.bytes() + std::string(payload));
 }
 
-std::string readCheckpointFile(const std::filesystem::path& path, std::uint64_t sceneFingerprint) {
+std::string readCheckpointFile(const std::filesystem::path& path, const CheckpointStamp& stamp) {
   const auto fail = [&](const std::string& what) { return CheckpointError(path.string() + ": " + what); };
   std::error_code error;
   if (!std::filesystem::is_regular_file(path, error)) throw fail("not a checkpoint file (missing, or not a regular file)");
@@ -92,9 +81,9 @@ std::string readCheckpointFile(const std::filesystem::path& path, std::uint64_t 
   if (version != formatVersion) {
     throw fail("checkpoint format " + std::to_string(version) + ", this build reads format " + std::to_string(formatVersion));
   }
-  if (build != buildFingerprint()) throw fail("written by another build of sqdem (its record layout differs); rerun the scene");
-  if (scene != sceneFingerprint) {
-    throw fail("written for another scene (scene fingerprint " + hex(scene) + ", this scene " + hex(sceneFingerprint) +
+  if (build != stamp.build) throw fail("written by another build of sqdem (its record layout differs); rerun the scene");
+  if (scene != stamp.scene) {
+    throw fail("written for another scene (scene fingerprint " + hex(scene) + ", this scene " + hex(stamp.scene) +
                "): resume with the scene file that wrote it, unchanged but for its 'output' keys");
   }
   const auto fileSize = std::filesystem::file_size(path, error);

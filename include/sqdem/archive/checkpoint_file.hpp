@@ -1,15 +1,16 @@
 #pragma once
-// Checkpoint files: a fixed header, then the payload (the run's progress and the World's state,
-// world_state.cpp). The header makes a checkpoint self-checking:
+// Checkpoint files (docs/architecture.md, "Stores"): a fixed header, then the payload (the run's
+// progress and the World's state, world_state.cpp). The header makes a checkpoint self-checking:
 //
 //   magic "sqdemCKP" | format version (u32) | build fingerprint (u64) | scene fingerprint (u64)
 //   | payload size (u64) | payload CRC-32 (u32) | payload
 //
-// The build fingerprint covers the format version and the byte layout of every record written
-// raw (a checkpoint is a restart file for the same build, not an archive); the scene fingerprint
-// is a hash of the validated scene (sceneFingerprint in scene/scene_fingerprint.hpp). A corrupted, truncated,
-// foreign or other-build file is refused with one message (CheckpointError) before any of its
-// payload is used.
+// The format version is the header's; the build fingerprint is the writer's (World::
+// stateFingerprint: the payload's version and the byte layout of every record written raw; a
+// checkpoint is a restart file for the same build, not an archive); the scene fingerprint is a
+// hash of the validated scene (scene/scene_fingerprint.hpp). A corrupted, truncated, foreign or
+// other-build file is refused with one message (CheckpointError) before any of its payload is
+// used.
 
 #include <cstdint>
 #include <cstring>
@@ -100,14 +101,17 @@ class CheckpointReader {
   std::size_t at_ = 0;
 };
 
-/// The build's own fingerprint: format version and record layouts (checkpoint_file.cpp).
-std::uint64_t buildFingerprint();
+/// What a checkpoint must have been written by and for.
+struct CheckpointStamp {
+  std::uint64_t build = 0;  ///< the payload's version and record layouts
+  std::uint64_t scene = 0;  ///< the validated scene
+};
 
 /// Writes header + payload atomically (a crash leaves the previous file or none).
-void writeCheckpointFile(const std::filesystem::path& path, std::uint64_t sceneFingerprint, std::string_view payload);
+void writeCheckpointFile(const std::filesystem::path& path, const CheckpointStamp& stamp, std::string_view payload);
 
-/// Reads a checkpoint and returns its payload after checking every header field and the CRC;
-/// throws CheckpointError("<path>: <what is wrong>").
-std::string readCheckpointFile(const std::filesystem::path& path, std::uint64_t sceneFingerprint);
+/// Reads a checkpoint and returns its payload after checking every header field, the stamp and
+/// the CRC; throws CheckpointError("<path>: <what is wrong>").
+std::string readCheckpointFile(const std::filesystem::path& path, const CheckpointStamp& stamp);
 
 }  // namespace sqdem

@@ -1,4 +1,4 @@
-#include "sqdem/io/atomic_file.hpp"
+#include "sqdem/archive/atomic_file.hpp"
 
 #include <fstream>
 #include <stdexcept>

@@ -1,0 +1,71 @@
+#pragma once
+// The reduction seam (docs/architecture.md, "Reductions"): every quantity of a run that is a sum,
+// maximum or decision over all particles or contacts — wall and body loads, the kinetic energy,
+// the neighbour-list rebuild decision, run health, the energy ledger, packing measures, stress,
+// servos and stop criteria, progress — is reduced through a Communicator, and only through it.
+// In one process (SerialCommunicator) every call returns its input: the seam costs a virtual
+// call per reduction. Across MPI ranks (mpi_communicator.hpp, its own target: MPI's headers stay
+// out of the engine) the sums are exact (ExactSum), so their bits do not depend on how the
+// particles are divided between ranks.
+
+#include <cstdint>
+#include <memory>
+#include <span>
+
+#include "sqdem/math/exact_sum.hpp"
+
+namespace sqdem {
+
+class Communicator {
+ public:
+  virtual ~Communicator() = default;
+
+  virtual int rank() const = 0;
+  virtual int size() const = 0;
+
+  /// Each value replaced by its sum over the ranks.
+  virtual void sum(std::span<ExactSum> values) const = 0;
+  virtual void sum(std::span<long long> values) const = 0;
+  /// Each value replaced by its maximum (minimum) over the ranks.
+  virtual void max(std::span<double> values) const = 0;
+  virtual void min(std::span<double> values) const = 0;
+
+  /// Whether any rank's value is true.
+  bool any(bool value) const {
+    double v = value ? 1.0 : 0.0;
+    max(std::span(&v, 1));
+    return v > 0.0;
+  }
+  /// A process's exact share summed over the ranks, rounded once (a share rounded first would
+  /// make the result depend on the decomposition).
+  double sum(ExactSum share) const {
+    sum(std::span(&share, 1));
+    return share.value();
+  }
+  double max(double value) const {
+    max(std::span(&value, 1));
+    return value;
+  }
+  double min(double value) const {
+    min(std::span(&value, 1));
+    return value;
+  }
+  long long sum(long long value) const {
+    sum(std::span(&value, 1));
+    return value;
+  }
+};
+
+/// One process: the ranks' reduction is the process's own value.
+class SerialCommunicator final : public Communicator {
+ public:
+  using Communicator::max, Communicator::min, Communicator::sum;
+  int rank() const override { return 0; }
+  int size() const override { return 1; }
+  void sum(std::span<ExactSum>) const override {}
+  void sum(std::span<long long>) const override {}
+  void max(std::span<double>) const override {}
+  void min(std::span<double>) const override {}
+};
+
+}  // namespace sqdem
