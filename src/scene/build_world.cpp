@@ -6,6 +6,7 @@
 #include <numbers>
 #include <random>
 
+#include "insertion_grid.hpp"
 #include "sqdem/mechanics/damping.hpp"
 #include "sqdem/scene/scene_loader.hpp"
 
@@ -115,17 +116,24 @@ World buildWorld(const Scene& scene) {
         }
       }
     }
+    // Every centre so far (explicit, from files, of earlier entries) binned in cells wider than
+    // any r + radii[j] this batch can test: its largest (the first) plus the largest of all.
+    const double rBatch = batch.empty() ? 0.0 : batch.front().first.boundingRadius();
+    const double rPlaced = radii.empty() ? 0.0 : *std::max_element(radii.begin(), radii.end());
+    detail::InsertionGrid grid(scene.domain, rBatch + std::max(rBatch, rPlaced), centres.size() + batch.size());
+    for (std::size_t j = 0; j < centres.size(); ++j) grid.add(static_cast<std::uint32_t>(j), centres[j]);
     for (std::size_t n = 0; n < batch.size(); ++n) {
       const auto& [shape, q] = batch[n];
       const double r = shape.boundingRadius();
       bool placed = false;
       for (int attempt = 0; attempt < 10000 && !placed; ++attempt) {
         const Vec3 x = scene.domain.wrap(Vec3(ux(rng), uy(rng), uz(rng)));
-        placed = clearOfWalls(x, r);
-        for (std::size_t j = 0; placed && j < centres.size(); ++j) {
-          placed = scene.domain.minimumImage(x - centres[j]).norm() > r + radii[j];
-        }
+        // The grid skips only centres that pass this test (insertion_grid.hpp).
+        placed = clearOfWalls(x, r) && grid.allOf(x, [&](std::uint32_t j) {
+          return scene.domain.minimumImage(x - centres[j]).norm() > r + radii[j];
+        });
         if (placed) {
+          grid.add(static_cast<std::uint32_t>(centres.size()), x);
           shapes.push_back(shape);
           materialOf.push_back(in.material);
           centres.push_back(x);
