@@ -99,7 +99,7 @@ TEST(Engine, RestingBedWallForceEqualsWeight) {
   World world = pouredBed(loadScene(writeScene("bed", bedScene)), 200.0, 40000);  // pour gently,
   world.setViscousDamping(0.0);  // then rest under contact damping alone
   double weight = 0.0;
-  for (double m : world.particles().mass) weight += m * 9.81;
+  for (std::size_t i = 0; i < world.particles().size(); ++i) weight += world.particles().mass[i] * 9.81;
   double error = 1.0;
   for (int s = 0; s < 200000 && error > 1e-4; ++s) {
     world.step();
@@ -158,7 +158,7 @@ TEST_P(ServoWall, ReachesAndHoldsItsPressure) {
   const double target = 50.0;  // Pa, about twice the bed's own weight per area
   world.walls()[1].servo = WallServo{target, GetParam()};
   double weight = 0.0;
-  for (double m : world.particles().mass) weight += m * 9.81;
+  for (std::size_t i = 0; i < world.particles().size(); ++i) weight += world.particles().mass[i] * 9.81;
   double pressureError = 1.0, balance = 1.0;
   int s = 0;
   for (; s < 300000 && (pressureError > 1e-3 || balance > 1e-3); ++s) {
@@ -196,8 +196,8 @@ TEST(Engine, HilbertReorderingChangesNoBit) {
   const World inserted = pour(0), reordered = pour(1);
   ASSERT_NE(reordered.particles().id, inserted.particles().id);  // the order did change
   const auto byId = [](const World& w, const std::vector<Vec3>& values) {
-    std::vector<Vec3> out(values.size());
-    for (std::size_t i = 0; i < values.size(); ++i) out[w.particles().id[i]] = values[i];
+    std::vector<Vec3> out(w.particles().size());  // the owned particles (ghosts follow them)
+    for (std::size_t i = 0; i < out.size(); ++i) out[w.particles().id[i]] = values[i];
     return out;
   };
   EXPECT_GT(inserted.neighbourList().builds(), 10);

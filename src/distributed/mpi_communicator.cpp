@@ -2,6 +2,8 @@
 
 #include <mpi.h>
 
+#include <climits>
+#include <numeric>
 #include <stdexcept>
 #include <vector>
 
@@ -61,7 +63,59 @@ class MpiCommunicator final : public Communicator {
   void max(std::span<double> values) const override { reduce(values.data(), values.size(), MPI_DOUBLE, MPI_MAX); }
   void min(std::span<double> values) const override { reduce(values.data(), values.size(), MPI_DOUBLE, MPI_MIN); }
 
+  std::vector<std::string> exchangeAll(std::vector<std::string> outbox) const override {
+    if (static_cast<int>(outbox.size()) != size_) throw std::logic_error("MPI: exchangeAll needs a message per rank");
+    std::vector<long long> sent(size_), received(size_);
+    for (int r = 0; r < size_; ++r) sent[r] = static_cast<long long>(outbox[r].size());
+    check(MPI_Alltoall(sent.data(), 1, MPI_LONG_LONG, received.data(), 1, MPI_LONG_LONG, MPI_COMM_WORLD), "MPI_Alltoall");
+    const std::vector<int> sendCount = counts(sent), receiveCount = counts(received);
+    std::vector<int> sendAt(size_, 0), receiveAt(size_, 0);
+    std::exclusive_scan(sendCount.begin(), sendCount.end(), sendAt.begin(), 0);
+    std::exclusive_scan(receiveCount.begin(), receiveCount.end(), receiveAt.begin(), 0);
+    std::string out, in(static_cast<std::size_t>(receiveAt.back() + receiveCount.back()), '\0');
+    for (const std::string& m : outbox) out += m;
+    check(MPI_Alltoallv(out.data(), sendCount.data(), sendAt.data(), MPI_BYTE, in.data(), receiveCount.data(),
+                        receiveAt.data(), MPI_BYTE, MPI_COMM_WORLD),
+          "MPI_Alltoallv");
+    std::vector<std::string> inbox(size_);
+    for (int r = 0; r < size_; ++r) inbox[r] = in.substr(receiveAt[r], receiveCount[r]);
+    return inbox;
+  }
+
+  std::vector<std::string> exchange(const std::vector<std::pair<int, std::string>>& outbox,
+                                    std::span<const int> from) const override {
+    std::vector<MPI_Request> sends(outbox.size());
+    for (std::size_t k = 0; k < outbox.size(); ++k) {
+      const std::string& m = outbox[k].second;
+      check(MPI_Isend(m.data(), counts({static_cast<long long>(m.size())})[0], MPI_BYTE, outbox[k].first, exchangeTag,
+                      MPI_COMM_WORLD, &sends[k]),
+            "MPI_Isend");
+    }
+    std::vector<std::string> inbox(from.size());
+    for (std::size_t k = 0; k < from.size(); ++k) {
+      MPI_Message message;
+      MPI_Status status;
+      check(MPI_Mprobe(from[k], exchangeTag, MPI_COMM_WORLD, &message, &status), "MPI_Mprobe");
+      int bytes = 0;
+      check(MPI_Get_count(&status, MPI_BYTE, &bytes), "MPI_Get_count");
+      inbox[k].resize(static_cast<std::size_t>(bytes));
+      check(MPI_Mrecv(inbox[k].data(), bytes, MPI_BYTE, &message, MPI_STATUS_IGNORE), "MPI_Mrecv");
+    }
+    check(MPI_Waitall(static_cast<int>(sends.size()), sends.data(), MPI_STATUSES_IGNORE), "MPI_Waitall");
+    return inbox;
+  }
+
  private:
+  /// Byte counts as MPI's int counts (a message, or a rank's messages together, below 2 GiB).
+  static std::vector<int> counts(const std::vector<long long>& bytes) {
+    if (std::accumulate(bytes.begin(), bytes.end(), 0LL) > INT_MAX) {
+      throw std::runtime_error("MPI: more than 2 GiB in one exchange (use more ranks)");
+    }
+    return {bytes.begin(), bytes.end()};
+  }
+  /// The tag of exchange()'s messages: each rank sends a partner at most one per call, and calls
+  /// are collective in order, so messages match by source alone.
+  static constexpr int exchangeTag = 7;
   static void reduce(void* data, std::size_t count, MPI_Datatype type, MPI_Op op) {
     if (count == 0) return;
     check(MPI_Allreduce(MPI_IN_PLACE, data, static_cast<int>(count), type, op, MPI_COMM_WORLD), "MPI_Allreduce");

@@ -1,9 +1,12 @@
 #include "sqdem/dynamics/particle_store.hpp"
 
+#include <stdexcept>
+
 namespace sqdem {
 
 std::size_t ParticleStore::add(std::uint32_t shapeIndex, std::uint32_t materialIndex, const Vec3& centre,
                                const Quat& q, double particleMass, const Vec3& principalInertia, double bound) {
+  if (ghostCount != 0) throw std::logic_error("ParticleStore: particles are added before ghosts are made");
   id.push_back(static_cast<std::uint32_t>(size()));
   shape.push_back(shapeIndex);
   material.push_back(materialIndex);

@@ -33,7 +33,7 @@ template <PairKind Kind>
   if constexpr (withWall(Kind)) {
     return detectSphereWall(p.position[a], rA, scene.walls[b & ~wallFlag].plane, scene.skin);
   } else {
-    return detectSpheres(p.position[a], rA, p.position[b] + s.shift[k], scene.shapes[p.shape[b]].a(), scene.skin);
+    return detectSpheres(p.position[a], rA, p.position[b], scene.shapes[p.shape[b]].a(), scene.skin);
   }
 }
 
@@ -54,7 +54,7 @@ ContactGeometry detect(const InteractionScene& scene, const std::vector<double>&
     const Wall& wall = scene.walls[b & ~wallFlag];
     if constexpr (Kind == PairKind::ParticleCylinder) {
       Cylinder image = wall.cylinder;  // the image nearest A (a periodic box)
-      image.point += s.shift[k];
+      image.point += s.wallImage[k];
       return detectContact(A, poseOf(p, a), image, settings, touched);
     } else {
       return detectContact(A, poseOf(p, a), scene.meshes[wall.mesh], wall.meshPose(), s.feature[k], settings, touched);
@@ -68,7 +68,7 @@ ContactGeometry detect(const InteractionScene& scene, const std::vector<double>&
       if (s.separation[k] > model.reach) return ContactGeometry{};  // Separated, no iterations
     }
     const Superquadric& B = scene.shapes[p.shape[b]];
-    const Pose poseB{p.position[b] + s.shift[k], p.orientation[b]};
+    const Pose poseB{p.position[b], p.orientation[b]};
     ContactGeometry g;
     if (s.status[k] == ContactStatus::Converged && scene.detector.warmStart) {
       g = detectContact(A, poseOf(p, a), B, poseB, settings, WarmStart{s.localA[k], s.localB[k], s.overlap[k]});
@@ -90,11 +90,10 @@ template <PairKind Kind>
   motion.angularVelocityA = p.angularVelocity[a];
   const Vec3 velocityA = p.velocity[a] + p.angularVelocity[a].cross(point - p.position[a]);
   if constexpr (withWall(Kind)) {
-    motion.relativeVelocity = scene.walls[b & ~wallFlag].surfaceVelocity(point - s.shift[k]) - velocityA;
+    motion.relativeVelocity = scene.walls[b & ~wallFlag].surfaceVelocity(point - s.wallImage[k]) - velocityA;
     motion.effectiveMass = p.mass[a];
   } else {
-    const Vec3 centreB = p.position[b] + s.shift[k];
-    motion.relativeVelocity = p.velocity[b] + p.angularVelocity[b].cross(point - centreB) - velocityA;
+    motion.relativeVelocity = p.velocity[b] + p.angularVelocity[b].cross(point - p.position[b]) - velocityA;
     motion.volumeRadiusB = scene.shapes[p.shape[b]].volumeEquivalentRadius();
     motion.angularVelocityB = p.angularVelocity[b];
     motion.effectiveMass = p.mass[a] * p.mass[b] / (p.mass[a] + p.mass[b]);
@@ -119,7 +118,7 @@ LawGeometry cachedLawGeometry(const InteractionScene& scene, const ContactModel&
     if constexpr (wall) {
       addCurvatures(g, A, poseOf(p, a));
     } else {
-      addCurvatures(g, A, poseOf(p, a), scene.shapes[p.shape[b]], Pose{p.position[b] + s.shift[k], p.orientation[b]});
+      addCurvatures(g, A, poseOf(p, a), scene.shapes[p.shape[b]], poseOf(p, b));
     }
     const LawGeometry fresh = detail::lawGeometry(model, g, motion);
     cache = {g.localPointA, g.localPointB, relative.coeffs(), fresh.contact.radii, fresh.contact.factors,
@@ -285,7 +284,7 @@ void runGroup(PairKind kind, const std::vector<std::uint32_t>& members, const Co
 
 void Interactions::compute(const InteractionScene& scene, std::vector<double>& speedBound, ContactStatistics& statistics) {
   const ParticleStore& p = scene.particles;
-  const auto n = static_cast<std::ptrdiff_t>(p.size());
+  const auto n = static_cast<std::ptrdiff_t>(p.slots());  // ghosts too
   // Only the iterative kinds cull separated pairs by the particles' speed bounds.
   const bool bounded = std::ranges::any_of(groups_, [](const Group& g) { return !round(g.kind) && !withWall(g.kind); });
   // One parallel region per computation: the groups' loops do not wait for each other (each

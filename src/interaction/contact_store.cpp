@@ -3,6 +3,8 @@
 #include <type_traits>
 #include <utility>
 
+#include "sqdem/archive/checkpoint_file.hpp"
+
 namespace sqdem {
 namespace {
 
@@ -29,7 +31,7 @@ void ContactStore::reserve(std::size_t n) {
   });
 }
 
-void ContactStore::add(const ContactKey& key, std::uint32_t slotA, std::uint32_t slotB, const Vec3& bShift) {
+void ContactStore::add(const ContactKey& key, std::uint32_t slotA, std::uint32_t slotB, const Vec3& wallImageOffset) {
   const std::size_t k = size();
   forEachArray(*this, [&](auto& array) {
     if (keeps(&array)) array.push_back(fresh<Element<decltype(array)>>());
@@ -39,7 +41,7 @@ void ContactStore::add(const ContactKey& key, std::uint32_t slotA, std::uint32_t
   feature[k] = key.feature;
   a[k] = slotA;
   b[k] = slotB;
-  shift[k] = bShift;
+  wallImage[k] = wallImageOffset;
   normal[k] = Vec3::UnitZ();
 }
 
@@ -56,6 +58,21 @@ void ContactStore::carryOver(std::size_t k, const ContactStore& other, std::size
                                                                : void()),
      ...);
   }, stateArrays);
+}
+
+void ContactStore::write(std::size_t k, CheckpointWriter& out) const {
+  forEachArray(*this, [&](const auto& array) {
+    if (keeps(&array)) out.put(array[k]);
+  });
+}
+
+void ContactStore::read(CheckpointReader& in) {
+  forEachArray(*this, [&](auto& array) {
+    if (!keeps(&array)) return;
+    Element<decltype(array)> value;
+    in.get(value);
+    array.push_back(value);
+  });
 }
 
 }  // namespace sqdem

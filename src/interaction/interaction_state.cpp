@@ -16,7 +16,8 @@ void Interactions::writeState(CheckpointWriter& out) const {
   out.putVector(interacting_);
 }
 
-Interactions Interactions::readState(CheckpointReader& in, const InteractionScene& scene) {
+Interactions Interactions::readState(CheckpointReader& in, const InteractionScene& scene,
+                                     const std::vector<std::uint32_t>& ghostOwner) {
   Interactions out;
   ContactStore& s = out.store_;
   const ContactStore expected = emptyStore(scene);
@@ -44,12 +45,12 @@ Interactions Interactions::readState(CheckpointReader& in, const InteractionScen
   std::vector<std::uint32_t> interacting;
   in.getVector(interacting, count);
 
-  const std::size_t n = scene.particles.size(), walls = scene.walls.size();
+  const std::size_t n = scene.particles.size(), slots = scene.particles.slots(), walls = scene.walls.size();
   const std::vector<std::uint32_t>& id = scene.particles.id;
   for (std::size_t k = 0; k < count; ++k) {
     requireIntact(s.a[k] < n && s.idA[k] == id[s.a[k]], "contact body A");
     requireIntact(s.onWall(k) ? (s.b[k] & ~wallFlag) < walls && s.idB[k] == s.b[k]
-                              : s.b[k] < n && s.idB[k] == id[s.b[k]] && s.idA[k] < s.idB[k],
+                              : s.b[k] < slots && s.idB[k] == id[s.b[k]] && s.idA[k] < s.idB[k],
                   "contact body B");
     requireIntact(static_cast<unsigned>(s.status[k]) <= static_cast<unsigned>(ContactStatus::Degenerate), "contact status");
     const Wall* wall = s.onWall(k) ? &scene.walls[s.b[k] & ~wallFlag] : nullptr;
@@ -67,7 +68,7 @@ Interactions Interactions::readState(CheckpointReader& in, const InteractionScen
   }
   out.interacting_ = std::move(interacting);
   out.regroup(scene);
-  out.indexInvolvement(n);
+  out.indexInvolvement(n, ghostOwner);
   return out;
 }
 

@@ -49,14 +49,15 @@ ContactStatistics& ContactStatistics::operator+=(const ContactStatistics& o) {
   return *this;
 }
 
-void Interactions::setCandidates(const std::vector<CandidateKey>& candidates, const InteractionScene& scene) {
-  if (candidates.size() >= bodyBFlag) throw std::length_error("Interactions: more than 2^31 candidate contacts");
+void Interactions::setCandidates(const std::vector<CandidateKey>& candidates, const InteractionScene& scene,
+                                 const std::vector<std::uint32_t>& ghostOwner) {
+  if (candidates.size() >= remoteFlag) throw std::length_error("Interactions: more than 2^30 candidate contacts");
   const std::vector<std::uint32_t>& id = scene.particles.id;
   ContactStore next = emptyStore(scene);
   next.reserve(candidates.size());
   for (const CandidateKey& c : candidates) {
     const std::uint32_t idB = (c.b & wallFlag) != 0 ? c.b : id[c.b];
-    next.add({(std::uint64_t{id[c.a]} << 32) | idB, c.feature}, c.a, c.b, c.shift);
+    next.add({(std::uint64_t{id[c.a]} << 32) | idB, c.feature}, c.a, c.b, c.wallImage);
   }
   std::vector<std::uint32_t> previousOrder = std::move(keyOrder_);
   const ContactStore previous = std::exchange(store_, std::move(next));
@@ -68,8 +69,39 @@ void Interactions::setCandidates(const std::vector<CandidateKey>& candidates, co
     if (old != previousOrder.end() && previous.key(*old) == store_.key(k)) store_.carryOver(k, previous, *old);
   }
   interacting_.clear();
+  remote_.clear();
   regroup(scene);
-  indexInvolvement(scene.particles.size());
+  indexInvolvement(scene.particles.size(), ghostOwner);
+}
+
+ContactStore Interactions::takeLeaving(const std::vector<std::uint8_t>& leaving) {
+  ContactStore gone = store_;
+  gone.retain([&](std::size_t k) { return leaving[store_.a[k]] != 0; });
+  store_.retain([&](std::size_t k) { return leaving[store_.a[k]] == 0; });
+  sortKeys();
+  return gone;
+}
+
+void Interactions::addArrived(const ContactStore& arrived) {
+  for (std::size_t k = 0; k < arrived.size(); ++k) {
+    store_.add(arrived.key(k), arrived.a[k], arrived.b[k], arrived.wallImage[k]);
+    store_.carryOver(store_.size() - 1, arrived, k);
+  }
+  sortKeys();
+}
+
+void Interactions::setRemoteContacts(const std::vector<RemoteContact>& contacts, std::size_t owned,
+                                     const std::vector<std::uint32_t>& ghostOwner) {
+  if (contacts.size() >= remoteFlag) throw std::length_error("Interactions: more than 2^30 remote contacts");
+  remote_ = contacts;
+  indexInvolvement(owned, ghostOwner);
+}
+
+LoadOnB Interactions::loadOnB(std::uint32_t k, const ParticleStore& p) const {
+  const ContactStore& s = store_;
+  if (!s.acting[k]) return {};
+  const Vec3 moment = s.withRolling ? s.moment[k] : Vec3::Zero();
+  return {s.force[k], (s.point[k] - p.position[s.b[k]]).cross(s.force[k]) + moment, 1};
 }
 
 void Interactions::sortKeys() {
@@ -86,7 +118,7 @@ void Interactions::fitStore(const InteractionScene& scene) {
   }
   ContactStore fitted = wanted;
   for (std::size_t k = 0; k < store_.size(); ++k) {
-    fitted.add(store_.key(k), store_.a[k], store_.b[k], store_.shift[k]);
+    fitted.add(store_.key(k), store_.a[k], store_.b[k], store_.wallImage[k]);
     fitted.carryOver(k, store_, k);
   }
   store_ = std::move(fitted);
@@ -100,28 +132,35 @@ void Interactions::regroup(const InteractionScene& scene) {
   for (auto& [type, list] : members) groups_.push_back({type.first, type.second, std::move(list)});
 }
 
-void Interactions::indexInvolvement(std::size_t particleCount) {
-  // Counting sort of the contacts by particle, in key order within each particle.
-  involvementStart_.assign(particleCount + 1, 0);
+void Interactions::indexInvolvement(std::size_t owned, const std::vector<std::uint32_t>& ghostOwner) {
+  // B's owned slot here (noOwner: the contact's B is owned on another rank, which sums it).
+  const auto ownerOfB = [&](std::size_t k) {
+    return store_.onWall(k) ? noOwner : store_.b[k] < owned ? store_.b[k] : ghostOwner[store_.b[k] - owned];
+  };
+  // Counting sort of the contacts by particle, in key order within each particle: the store's
+  // and the remote ones merged by key.
+  involvementStart_.assign(owned + 1, 0);
   for (std::size_t k = 0; k < store_.size(); ++k) {
     ++involvementStart_[store_.a[k] + 1];
-    if (!store_.onWall(k)) ++involvementStart_[store_.b[k] + 1];
+    if (ownerOfB(k) != noOwner) ++involvementStart_[ownerOfB(k) + 1];
   }
+  for (const RemoteContact& r : remote_) ++involvementStart_[r.slot + 1];
+  std::vector<std::uint32_t> remoteOrder(remote_.size());
+  std::iota(remoteOrder.begin(), remoteOrder.end(), 0u);
+  std::sort(remoteOrder.begin(), remoteOrder.end(), [&](std::uint32_t x, std::uint32_t y) { return remote_[x].key < remote_[y].key; });
   std::partial_sum(involvementStart_.begin(), involvementStart_.end(), involvementStart_.begin());
   involvement_.resize(involvementStart_.back());
   std::vector<std::uint32_t> fill(involvementStart_.begin(), involvementStart_.end() - 1);
+  auto next = remoteOrder.begin();
+  const auto remoteUpTo = [&](const ContactKey& key) {
+    for (; next != remoteOrder.end() && remote_[*next].key < key; ++next) involvement_[fill[remote_[*next].slot]++] = remoteFlag | *next;
+  };
   for (const std::uint32_t k : keyOrder_) {
+    remoteUpTo(store_.key(k));
     involvement_[fill[store_.a[k]]++] = k;
-    if (!store_.onWall(k)) involvement_[fill[store_.b[k]]++] = k | bodyBFlag;
+    if (ownerOfB(k) != noOwner) involvement_[fill[ownerOfB(k)]++] = k | bodyBFlag;
   }
-}
-
-void Interactions::followSlots(const std::vector<std::uint32_t>& slotOf) {
-  for (std::size_t k = 0; k < store_.size(); ++k) {
-    store_.a[k] = slotOf[store_.a[k]];
-    if (!store_.onWall(k)) store_.b[k] = slotOf[store_.b[k]];
-  }
-  indexInvolvement(slotOf.size());
+  remoteUpTo(ContactKey{~std::uint64_t{0}, ~std::uint32_t{0}});
 }
 
 std::array<ExactSum, 4> Interactions::energy() const {

@@ -6,7 +6,7 @@
 namespace sqdem {
 
 void Interactions::reduce(ParticleStore& p, const Vec3& gravity, double drag, const std::vector<Wall>& walls,
-                          std::vector<WallLoadSum>& wallLoads) {
+                          std::vector<WallLoadSum>& wallLoads, std::span<const LoadOnB> remote) {
   const ContactStore& s = store_;
   const auto n = static_cast<std::ptrdiff_t>(p.size());
 #pragma omp parallel for schedule(static)
@@ -14,6 +14,13 @@ void Interactions::reduce(ParticleStore& p, const Vec3& gravity, double drag, co
     p.force[i] = p.mass[i] * (gravity - drag * p.velocity[i]);
     p.torque[i].setZero();
     for (std::uint32_t m = involvementStart_[i]; m < involvementStart_[i + 1]; ++m) {
+      if ((involvement_[m] & remoteFlag) != 0) {  // computed where its A is owned (loadOnB)
+        const LoadOnB& load = remote[involvement_[m] & ~remoteFlag];
+        if (!load.acting) continue;
+        p.force[i] += load.force;
+        p.torque[i] += load.torque;
+        continue;
+      }
       const std::uint32_t k = involvement_[m] & ~bodyBFlag;
       if (!s.acting[k]) continue;
       const Vec3& force = s.force[k];
@@ -23,7 +30,7 @@ void Interactions::reduce(ParticleStore& p, const Vec3& gravity, double drag, co
         p.torque[i] -= (s.point[k] - p.position[i]).cross(force) + moment;
       } else {
         p.force[i] += force;
-        p.torque[i] += (s.point[k] - (p.position[i] + s.shift[k])).cross(force) + moment;
+        p.torque[i] += (s.point[k] - p.position[s.b[k]]).cross(force) + moment;  // B's slot: i or its image
       }
     }
   }
@@ -35,7 +42,7 @@ void Interactions::reduce(ParticleStore& p, const Vec3& gravity, double drag, co
     interacting_.push_back(k);
     if (!s.onWall(k)) continue;
     const std::uint32_t w = s.b[k] & ~wallFlag;
-    const Vec3 torque = (s.point[k] - s.shift[k] - walls[w].reference()).cross(s.force[k]) +
+    const Vec3 torque = (s.point[k] - s.wallImage[k] - walls[w].reference()).cross(s.force[k]) +
                         (s.withRolling ? s.moment[k] : Vec3::Zero());
     const Vec3 elastic = s.force[k] - s.load[k].damping * s.normal[k];
     std::array<ExactSum, 10>& part = wallLoads[w].part;

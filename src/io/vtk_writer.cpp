@@ -107,7 +107,7 @@ PolyData contactFrame(const World& world) {
             overlap = float64("overlap", 1), area = float64("area", 1);
   for (const ContactView c : world.contacts()) {
     d.points.push(p.position[c.a()]);
-    d.points.push(c.onWall() ? c.point() : Vec3(p.position[c.b()] + c.shift()));
+    d.points.push(c.onWall() ? c.point() : p.position[c.b()]);
     const auto n = static_cast<std::int64_t>(d.pointCount());
     d.connectivity.insert(d.connectivity.end(), {n - 2, n - 1});
     d.endCell();

@@ -26,7 +26,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "sqdem/world/domain.hpp"
+#include "sqdem/geometry/domain.hpp"
 
 namespace sqdem::detail {
 

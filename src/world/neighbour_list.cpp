@@ -1,5 +1,7 @@
 #include "sqdem/world/neighbour_list.hpp"
 
+#include <algorithm>
+
 namespace sqdem {
 
 bool NeighbourList::needsRebuild(const ParticleStore& particles) const {
@@ -11,11 +13,13 @@ bool NeighbourList::needsRebuild(const ParticleStore& particles) const {
   return false;
 }
 
-void NeighbourList::rebuild(ParticleStore& particles, const std::vector<double>& boundingRadius) {
-  for (Vec3& x : particles.position) x = domain_.wrap(x);
-  reference_ = particles.position;
-  const ParticleCloud cloud{reference_, boundingRadius, particles.id};
-  pairs_ = search_ == BroadPhase::CellList ? cellListPairs(domain_, cloud, skin_) : aabbTreePairs(domain_, cloud, skin_);
+void NeighbourList::rebuild(const ParticleStore& particles, const std::vector<double>& reach) {
+  reference_.assign(particles.position.begin(), particles.position.begin() + static_cast<std::ptrdiff_t>(particles.size()));
+  const ParticleCloud cloud{particles.position, reach, particles.id};
+  pairs_ = search_ == BroadPhase::CellList ? cellListPairs(cloud, skin_) : aabbTreePairs(cloud, skin_);
+  // Sorted by a, owned slots first: the pairs of a ghost A (computed where A is owned) end it.
+  const auto owned = static_cast<std::uint32_t>(particles.size());
+  pairs_.erase(std::partition_point(pairs_.begin(), pairs_.end(), [&](const CandidatePair& c) { return c.a < owned; }), pairs_.end());
   ++builds_;
 }
 

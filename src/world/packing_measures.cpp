@@ -18,12 +18,13 @@ double volumeInSlab(const Superquadric& s, const Pose& pose, double lo, double h
 }
 
 std::vector<int> coordinationNumbers(const World& world) {
-  std::vector<int> z(world.particles().size(), 0);
+  std::vector<int> z(world.particles().slots(), 0);  // a ghost's count goes to its owner
   for (const ContactView c : world.contacts()) {
     if (c.onWall()) continue;
     ++z[c.a()];
     ++z[c.b()];
   }
+  world.ghosts().fold(world.particles(), z);
   return z;
 }
 
@@ -36,7 +37,8 @@ const Wall* floorWall(const World& world) {
 
 double solidVolume(const World& world) {
   ExactSum v;
-  for (const std::uint32_t s : world.particles().shape) v.add(world.shapes()[s].volume());
+  const ParticleStore& p = world.particles();
+  for (std::size_t i = 0; i < p.size(); ++i) v.add(world.shapes()[p.shape[i]].volume());
   return world.communicator().sum(v);
 }
 
@@ -100,7 +102,7 @@ PackingMeasures measurePacking(const World& world) {
   std::array<ExactSum, 9> stress;  // l (x) f, row-major
   std::array<long long, 2> counted{0, 0};  // yielded, acting
   for (const ContactView c : world.contacts()) {
-    const Vec3 branch = c.onWall() ? Vec3(c.point() - p.position[c.a()]) : Vec3(p.position[c.b()] + c.shift() - p.position[c.a()]);
+    const Vec3 branch = c.onWall() ? Vec3(c.point() - p.position[c.a()]) : Vec3(p.position[c.b()] - p.position[c.a()]);
     const Mat3 lf = branch * c.force().transpose();
     for (int r = 0; r < 3; ++r) {
       for (int col = 0; col < 3; ++col) stress[3 * r + col].add(lf(r, col));

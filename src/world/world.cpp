@@ -5,6 +5,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "sqdem/distributed/migration.hpp"
+#include "sqdem/math/permutation.hpp"
 #include "sqdem/dynamics/integrator.hpp"
 #include "sqdem/dynamics/rayleigh_time.hpp"
 #include "sqdem/mechanics/collision_time.hpp"
@@ -33,7 +35,29 @@ World::World(std::vector<Superquadric> shapes, std::vector<Material> materials, 
       models_(materials_.size() * materials_.size()),
       modelSet_(models_.size(), false),
       domain_(domain),
-      neighbours_(domain, skin, search) {}
+      neighbours_(skin, search),
+      parts_{wholeBox(domain)} {}
+
+void World::setCommunicator(std::shared_ptr<const Communicator> communicator) {
+  communicator_ = std::move(communicator);
+  ParticleStore& p = particles_;
+  ghosts_.drop(p);
+  neighbours_.restore({}, {}, neighbours_.builds());  // built again at the next step
+  const int ranks = communicator_->size();
+  if (ranks == 1) {
+    parts_ = {wholeBox(domain_)};
+    return;
+  }
+  // Every rank holds the same particles: each cuts the same sub-domains, by particle counts.
+  for (std::size_t i = 0; i < p.size(); ++i) p.position[i] = domain_.wrap(p.position[i]);
+  parts_ = bisect(domain_, p.position, std::vector<double>(p.size(), 1.0), ranks, SerialCommunicator());
+  std::vector<std::uint32_t> mine;
+  for (std::uint32_t i = 0; i < p.size(); ++i) {
+    if (ownerOf(parts_, p.position[i]) == communicator_->rank()) mine.push_back(i);
+  }
+  ParticleStore::forEachArray(p, [&](auto& array) { permute(array, mine); });
+  interactions_.setCandidates({}, interactionScene(), ghosts_.localOwners());
+}
 
 ContactModel World::defaultContactModel(std::uint32_t ma, std::uint32_t mb) const {
   const Material &A = materials_.at(ma), &B = materials_.at(mb);
@@ -64,6 +88,7 @@ std::size_t World::addParticle(std::uint32_t shape, std::uint32_t material, cons
   const Superquadric& s = shapes_.at(shape);
   const double density = materials_.at(material).density;
   forcesCurrent_ = false;
+  ghosts_.drop(particles_);
   return particles_.add(shape, material, centre, q, s.mass(density), s.principalMomentsOfInertia(density),
                         s.boundingRadius());
 }
@@ -79,7 +104,7 @@ void World::buildCandidates() {
   auto pair = neighbours_.pairs().begin();
   const auto pairsEnd = neighbours_.pairs().end();
   for (std::uint32_t i = 0; i < p.size(); ++i) {
-    for (; pair != pairsEnd && pair->a == i; ++pair) next.push_back({i, pair->b, pair->shift});
+    for (; pair != pairsEnd && pair->a == i; ++pair) next.push_back({i, pair->b});
     for (std::uint32_t w = 0; w < walls_.size(); ++w) {
       // A cylinder across a periodic direction acts through its image nearest the particle
       // (the contact's shift); planes are parallel to the periodic directions.
@@ -94,7 +119,8 @@ void World::buildCandidates() {
       if (wall.distance(p.position[i] - shift) < reach) next.push_back({i, wallFlag | w, shift});
     }
   }
-  interactions_.setCandidates(next, interactionScene());
+  interactions_.setCandidates(next, interactionScene(), ghosts_.localOwners());
+  if (communicator_->size() > 1) remoteLoads_.build(interactions_, p, ghosts_, *communicator_);
   wallReference_.clear();
   for (const Wall& w : walls_) wallReference_.push_back(w.reference());
 }
@@ -151,6 +177,44 @@ void World::reduceWallLoads() {
   }
 }
 
+double World::ghostCutoff(const ParticleStore& p) const {
+  double largest = 0.0;
+  for (std::size_t i = 0; i < p.size(); ++i) largest = std::max(largest, p.boundingRadius[i]);
+  return 2.0 * communicator_->max(largest) + largestRange() + neighbours_.skin();
+}
+
+void World::rebuildNeighbours() {
+  ParticleStore& p = particles_;
+  ghosts_.drop(p);
+  for (std::size_t i = 0; i < p.size(); ++i) p.position[i] = domain_.wrap(p.position[i]);
+  if (communicator_->size() > 1) rebalance();
+  migrate(p, interactions_, parts_, *communicator_);
+  if (reorderInterval_ > 0 && neighbours_.builds() % reorderInterval_ == 0) reorderAlongHilbertCurve();
+  ghosts_.build(p, p.position, domain_, ghostCutoff(p), parts_, *communicator_);
+  // Laws acting across a gap (roughness) widen every candidate's reach by their range.
+  const double range = largestRange();
+  if (range > 0.0) {
+    std::vector<double> reach(p.boundingRadius);
+    for (double& r : reach) r += 0.5 * range;
+    neighbours_.rebuild(p, reach);
+  } else {
+    neighbours_.rebuild(p, p.boundingRadius);
+  }
+}
+
+void World::rebalance() {
+  const ParticleStore& p = particles_;
+  std::vector<double> cost(p.size(), 1.0);
+  const ContactStore& s = interactions_.store();
+  for (std::size_t k = 0; k < s.size(); ++k) cost[s.a[k]] += 1.0;  // the store's slots: of the last build
+  const long long mine = static_cast<long long>(p.size() + s.size());
+  const double mean = static_cast<double>(communicator_->sum(mine)) / communicator_->size();
+  imbalance_ = mean > 0.0 ? communicator_->max(static_cast<double>(mine)) / mean : 1.0;
+  if (imbalance_ <= rebalanceThreshold_) return;
+  parts_ = bisect(domain_, p.position, cost, communicator_->size(), *communicator_);
+  ++rebalances_;
+}
+
 void World::computeForces() {
   for (std::size_t k = 0; k < models_.size(); ++k) {
     if (!modelSet_[k]) throw std::logic_error("World: a material pair has no contact model");
@@ -158,17 +222,10 @@ void World::computeForces() {
   const auto start = Clock::now();
   ParticleStore& p = particles_;
   if (communicator_->any(neighbours_.needsRebuild(p)) || wallsMovedHalfSkin()) {
-    if (reorderInterval_ > 0 && neighbours_.builds() % reorderInterval_ == 0) reorderAlongHilbertCurve();
-    // Laws acting across a gap (roughness) widen every candidate's reach by their range.
-    const double range = largestRange();
-    if (range > 0.0) {
-      std::vector<double> reach(p.boundingRadius);
-      for (double& r : reach) r += 0.5 * range;
-      neighbours_.rebuild(p, reach);
-    } else {
-      neighbours_.rebuild(p, p.boundingRadius);
-    }
+    rebuildNeighbours();
     buildCandidates();
+  } else {
+    ghosts_.refresh(p, *communicator_);
   }
 
   const auto contactsStart = Clock::now();
@@ -176,7 +233,8 @@ void World::computeForces() {
   interactions_.compute(interactionScene(), p.speedBound, statistics_);
   const auto reduction = Clock::now();
   timing_.contacts += seconds(reduction - contactsStart);
-  interactions_.reduce(p, gravity_, viscousDamping_, walls_, wallLoads_);
+  if (communicator_->size() > 1) remoteLoadsNow_ = remoteLoads_.exchange(interactions_, p, *communicator_);
+  interactions_.reduce(p, gravity_, viscousDamping_, walls_, wallLoads_, remoteLoadsNow_);
   reduceWallLoads();
   forcesCurrent_ = true;
   if (ledger_ && !ledger_->started) ledger_->start(*this);
@@ -206,8 +264,9 @@ void World::step() {
   computeForces();
   if (ledger_) ledger_->addStep(*this, before);
   const auto kickStart = Clock::now();
+  const auto owned = static_cast<std::ptrdiff_t>(p.size());  // particles may have migrated
 #pragma omp parallel for schedule(static)
-  for (std::ptrdiff_t i = 0; i < n; ++i) kick(p, i, 0.5 * h);
+  for (std::ptrdiff_t i = 0; i < owned; ++i) kick(p, i, 0.5 * h);
   timing_.integration += seconds(Clock::now() - kickStart);
 }
 

@@ -13,7 +13,7 @@ namespace sqdem {
 namespace {
 
 /// The payload's version: raised whenever writeState writes other records or in another order.
-constexpr std::uint64_t stateVersion = 11;
+constexpr std::uint64_t stateVersion = 12;
 
 }  // namespace
 
@@ -30,11 +30,12 @@ std::uint64_t World::stateFingerprint() {
 void World::writeState(CheckpointWriter& out) const {
   out.put(static_cast<std::uint64_t>(particles_.size()));
   out.put(static_cast<std::uint64_t>(walls_.size()));
-  ParticleStore::forEachArray(particles_, [&](const auto& array) { out.putVector(array); });
+  // The owned particles; the ghosts are made again from the positions of the last build.
+  ParticleStore::forEachArray(particles_, [&](const auto& array) { out.putPrefix(array, particles_.size()); });
   out.putVector(walls_);
   out.putVector(wallReference_);
-  interactions_.writeState(out);
   out.putVector(neighbours_.referencePositions());
+  interactions_.writeState(out);
   out.putVector(neighbours_.pairs());
   out.put(neighbours_.builds());
   out.put(statistics_);
@@ -80,10 +81,14 @@ void World::readState(CheckpointReader& in) {
     requireIntact(w.shape != WallShape::Mesh || w.mesh < meshes_.size(), "wall mesh index");
     requireIntact(std::abs(w.orientation.squaredNorm() - 1.0) < 1e-9, "wall orientation");
   }
+  in.getVector(reference, n);
+  requireIntact(reference.empty() || reference.size() == n, "array lengths");
+  // The ghosts of the last build, as it made them (the cut-off from the scene's particles).
+  Ghosts ghosts;
+  if (!reference.empty()) ghosts.build(restored, reference, domain_, ghostCutoff(restored), parts_, *communicator_);
   Interactions interactions = Interactions::readState(
       in, {restored, shapes_, wallRecords, meshes_, models_, materials_.size(), neighbours_.skin(), dt_, detector_,
-           ledger_.has_value()});
-  in.getVector(reference, n);
+           ledger_.has_value()}, ghosts.localOwners());
   in.getVector(candidates, anyLength);
   in.get(builds);
   ContactStatistics statistics;
@@ -108,12 +113,14 @@ void World::readState(CheckpointReader& in) {
   // Every index the engine will follow.
   std::vector<std::uint8_t> seen(n, 0);
   for (std::size_t i = 0; i < n; ++i) requireIntact(restored.id[i] < n && !seen[restored.id[i]]++, "particle ids");
-  requireIntact(reference.empty() || reference.size() == n, "array lengths");
   requireIntact(wallReference.empty() || wallReference.size() == walls, "wall reference points");
-  for (const CandidatePair& c : candidates) requireIntact(c.a < n && c.b < n && c.a != c.b, "candidate pair index");
+  for (const CandidatePair& c : candidates) {
+    requireIntact(c.a < n && c.b < restored.slots() && restored.id[c.a] < restored.id[c.b], "candidate pair index");
+  }
   requireIntact(builds >= 0 && std::isfinite(dt) && dt > 0.0 && std::isfinite(time), "counters");
 
   particles_ = std::move(restored);
+  ghosts_ = std::move(ghosts);
   walls_ = std::move(wallRecords);
   wallReference_ = std::move(wallReference);
   interactions_ = std::move(interactions);

@@ -58,9 +58,14 @@ class CheckpointWriter {
   /// A vector as its size then its elements.
   template <typename T>
   void putVector(const std::vector<T>& v) {
+    putPrefix(v, v.size());
+  }
+  /// The first n elements of a vector, as putVector writes a vector of n.
+  template <typename T>
+  void putPrefix(const std::vector<T>& v, std::size_t n) {
     static_assert(std::is_trivially_destructible_v<T>);
-    put(static_cast<std::uint64_t>(v.size()));
-    bytes_.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
+    put(static_cast<std::uint64_t>(n));
+    bytes_.append(reinterpret_cast<const char*>(v.data()), n * sizeof(T));
   }
   const std::string& bytes() const { return bytes_; }
 

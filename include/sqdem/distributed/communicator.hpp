@@ -1,16 +1,20 @@
 #pragma once
-// The reduction seam (docs/architecture.md, "Reductions"): every quantity of a run that is a sum,
+// The reduction seam (docs/architecture.md, "Reductions", "Ghosts"): every quantity of a run that is a sum,
 // maximum or decision over all particles or contacts — wall and body loads, the kinetic energy,
 // the neighbour-list rebuild decision, run health, the energy ledger, packing measures, stress,
 // servos and stop criteria, progress — is reduced through a Communicator, and only through it.
 // In one process (SerialCommunicator) every call returns its input: the seam costs a virtual
 // call per reduction. Across MPI ranks (mpi_communicator.hpp, its own target: MPI's headers stay
 // out of the engine) the sums are exact (ExactSum), so their bits do not depend on how the
-// particles are divided between ranks.
+// particles are divided between ranks. The same seam carries the messages between ranks: the
+// particles that migrate and their ghosts (byte strings, written and read as records).
 
 #include <cstdint>
 #include <memory>
 #include <span>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "sqdem/math/exact_sum.hpp"
 
@@ -29,6 +33,16 @@ class Communicator {
   /// Each value replaced by its maximum (minimum) over the ranks.
   virtual void max(std::span<double> values) const = 0;
   virtual void min(std::span<double> values) const = 0;
+
+  /// All to all (collective): outbox[r] goes to rank r, this one included; returns what every
+  /// rank sent this one (inbox[r] from rank r). For the rare exchanges (migration, choosing the
+  /// ghosts), when a rank does not know who will send to it.
+  virtual std::vector<std::string> exchangeAll(std::vector<std::string> outbox) const = 0;
+  /// Between neighbours: sends every (rank, bytes) of outbox and returns one message from each
+  /// rank of `from`, in that order; every message sent must be expected by its receiver (the
+  /// ghosts' refreshes and loads of every step, between the partners of the last rebuild).
+  virtual std::vector<std::string> exchange(const std::vector<std::pair<int, std::string>>& outbox,
+                                            std::span<const int> from) const = 0;
 
   /// Whether any rank's value is true.
   bool any(bool value) const {
@@ -66,6 +80,13 @@ class SerialCommunicator final : public Communicator {
   void sum(std::span<long long>) const override {}
   void max(std::span<double>) const override {}
   void min(std::span<double>) const override {}
+  std::vector<std::string> exchangeAll(std::vector<std::string> outbox) const override { return outbox; }
+  std::vector<std::string> exchange(const std::vector<std::pair<int, std::string>>& outbox,
+                                    std::span<const int> from) const override {
+    std::vector<std::string> inbox;
+    for (std::size_t k = 0; k < from.size(); ++k) inbox.push_back(k < outbox.size() ? outbox[k].second : std::string());
+    return inbox;
+  }
 };
 
 }  // namespace sqdem

@@ -35,10 +35,15 @@ struct ParticleStore {
   /// detectors cull separated pairs by it (Interactions::compute), 0 otherwise.
   std::vector<double> speedBound;
 
-  std::size_t size() const { return position.size(); }
+  /// Slots [0, size()) hold the particles this process owns, slots [size(), slots()) their
+  /// ghosts (distributed/ghosts.hpp): copies of particles seen from elsewhere in the domain (a
+  /// periodic image), made again at every neighbour-list build. Every array has slots() entries.
+  std::size_t ghostCount = 0;
+  std::size_t size() const { return position.size() - ghostCount; }
+  std::size_t slots() const { return position.size(); }
 
   /// Calls f(array) for every per-particle array, in a fixed order: the one list of them that
-  /// checkpoints and re-ordering use, so a new field cannot be forgotten there.
+  /// checkpoints, re-ordering and ghosts use, so a new field cannot be forgotten there.
   template <typename Store, typename F>
   static void forEachArray(Store& store, F&& f) {
     f(store.id);
@@ -57,7 +62,8 @@ struct ParticleStore {
     f(store.speedBound);
   }
 
-  /// Appends a particle at rest, its id the next one; returns its slot.
+  /// Appends a particle at rest, its id the next one; returns its slot. The store holds no
+  /// ghosts then (std::logic_error otherwise).
   std::size_t add(std::uint32_t shapeIndex, std::uint32_t materialIndex, const Vec3& centre, const Quat& q,
                   double particleMass, const Vec3& principalInertia, double bound);
 

@@ -7,7 +7,8 @@
 //                0 for other bodies): the contact's key, the same in every process and however
 //                the particles are stored
 //   where        a, b: the bodies' slots in this process's particle store (b = wallFlag | wall
-//                for a wall), B's periodic shift: found again at every candidate build
+//                for a wall; a particle B may be a ghost, its periodic image), a cylinder
+//                wall's image: found again at every candidate build
 //   warm start   status, both surface points in their body frames, the separation bound
 //   geometry     normal, overlap, contact point (the reduction's lever arm)
 //   histories    tangential spring, the normal law's record, the rolling displacement
@@ -32,6 +33,9 @@
 #include "sqdem/mechanics/normal_law.hpp"
 
 namespace sqdem {
+
+class CheckpointReader;
+class CheckpointWriter;
 
 /// The parts of a contact's normal force that outputs and wall servos read.
 struct NormalLoad {
@@ -65,7 +69,9 @@ struct ContactStore {
   std::vector<std::uint32_t> idA, idB;  ///< global ids (idB: wallFlag | wall for a wall)
   std::vector<std::uint32_t> feature;   ///< of a mesh wall (0 otherwise)
   std::vector<std::uint32_t> a, b;      ///< slots in this process (b: wallFlag | wall for a wall)
-  std::vector<Vec3> shift;              ///< periodic image offset of B (m)
+  /// A cylinder wall's image nearest A in a periodic box, as an offset (m); zero otherwise (a
+  /// particle's periodic image is a ghost slot, distributed/ghosts.hpp).
+  std::vector<Vec3> wallImage;
 
   std::vector<ContactStatus> status;  ///< of the last solve
   std::vector<Vec3> localA, localB;   ///< surface points in A's and B's body frames (m)
@@ -111,7 +117,7 @@ struct ContactStore {
     f(s.feature);
     f(s.a);
     f(s.b);
-    f(s.shift);
+    f(s.wallImage);
     std::apply([&](auto... member) { (f(s.*member), ...); }, stateArrays);
     f(s.acting);
     f(s.energy);
@@ -137,7 +143,7 @@ struct ContactStore {
       for (const char* line = first; line < last; line += 64) __builtin_prefetch(line);
       __builtin_prefetch(last);
     };
-    ahead(a), ahead(b), ahead(shift), ahead(status), ahead(localA), ahead(localB), ahead(separation);
+    ahead(a), ahead(b), ahead(wallImage), ahead(status), ahead(localA), ahead(localB), ahead(separation);
     ahead(normal), ahead(overlap), ahead(point), ahead(spring), ahead(normalHistory);
     ahead(acting), ahead(force), ahead(load);
     if (withRolling) ahead(rolling), ahead(moment);
@@ -146,12 +152,30 @@ struct ContactStore {
   }
   /// Room for n contacts in every kept array.
   void reserve(std::size_t n);
-  /// Appends a fresh candidate (no geometry, no history): its key, its bodies' slots and B's shift.
-  void add(const ContactKey& key, std::uint32_t slotA, std::uint32_t slotB, const Vec3& bShift);
+  /// Appends a fresh candidate (no geometry, no history): its key, its bodies' slots and a
+  /// cylinder wall's image offset.
+  void add(const ContactKey& key, std::uint32_t slotA, std::uint32_t slotB, const Vec3& wallImageOffset);
   /// Forgets contact k's geometry and history (it is solved cold next time).
   void reset(std::size_t k);
   /// Copies contact `from` of `other` (same layout) into contact k: every state array.
   void carryOver(std::size_t k, const ContactStore& other, std::size_t from);
+  /// Contact k's record, every kept array, for another process (its A migrates there).
+  void write(std::size_t k, CheckpointWriter& out) const;
+  /// Appends a record written by write() of a store with the same optional arrays.
+  void read(CheckpointReader& in);
+  /// Keeps the contacts k for which keep(k), in their order.
+  template <typename Keep>
+  void retain(Keep&& keep) {
+    std::vector<std::size_t> kept;
+    for (std::size_t k = 0; k < size(); ++k) {
+      if (keep(k)) kept.push_back(k);
+    }
+    forEachArray(*this, [&](auto& array) {
+      if (!keeps(&array)) return;
+      for (std::size_t m = 0; m < kept.size(); ++m) array[m] = array[kept[m]];
+      array.resize(kept.size());
+    });
+  }
 };
 
 /// Read access to one contact of a store (outputs, tests).
@@ -166,7 +190,6 @@ class ContactView {
   bool onWall() const { return s_->onWall(k_); }
   std::uint32_t wall() const { return s_->b[k_] & ~wallFlag; }
   std::uint32_t feature() const { return s_->feature[k_]; }  ///< of a mesh wall
-  const Vec3& shift() const { return s_->shift[k_]; }
   const Vec3& normal() const { return s_->normal[k_]; }
   double overlap() const { return s_->overlap[k_]; }
   const Vec3& point() const { return s_->point[k_]; }

@@ -12,6 +12,7 @@
 #include <array>
 #include <cstdint>
 #include <ranges>
+#include <span>
 #include <vector>
 
 #include "sqdem/contact/detector.hpp"
@@ -72,12 +73,12 @@ struct InteractionScene {
   bool energy = false;  ///< the contacts account their energy (ContactEnergy)
 };
 
-/// A candidate pair for Interactions::setCandidates: slots a and b (a particle slot, or
-/// wallFlag | wall), oriented by id (for two particles, id[a] < id[b]), B seen at its position
-/// + shift, and a mesh wall's feature.
+/// A candidate pair for Interactions::setCandidates: slots a and b (a particle slot, owned or a
+/// ghost, or wallFlag | wall), oriented by id (for two particles, id[a] < id[b]), a cylinder
+/// wall's image offset (ContactStore::wallImage) and a mesh wall's feature.
 struct CandidateKey {
   std::uint32_t a = 0, b = 0;
-  Vec3 shift = Vec3::Zero();
+  Vec3 wallImage = Vec3::Zero();
   std::uint32_t feature = 0;
 };
 
@@ -88,14 +89,32 @@ struct WallLoadSum {
   std::array<ExactSum, 10> part;  ///< force (N), torque about the reference (N m), elastic force (N), stiffness (N/m)
 };
 
+/// A contact computed on another rank (where its A is owned) whose B this process owns: B's slot
+/// here and the contact's key, so that B sums it in key order with its own.
+struct RemoteContact {
+  std::uint32_t slot;
+  ContactKey key;
+};
+
+/// A contact's load on its B (Interactions::loadOnB), sent to B's owner: the same terms, in the
+/// same order, as B's sum would add for a contact of its own process.
+struct LoadOnB {
+  Vec3 force = Vec3::Zero();   ///< (N)
+  Vec3 torque = Vec3::Zero();  ///< about B's centre, the pure moment included (N m)
+  std::uint8_t acting = 0;     ///< whether it carried force (else it is not added)
+};
+
 /// An empty store with the optional arrays the scene's contact models need.
 ContactStore emptyStore(const InteractionScene& scene);
 
 class Interactions {
  public:
   /// Replaces the candidates (unique keys, in any order: the store keeps theirs), carrying over
-  /// the geometry and histories of pairs that persist (matched by key), and regroups them.
-  void setCandidates(const std::vector<CandidateKey>& candidates, const InteractionScene& scene);
+  /// the geometry and histories of pairs that persist (matched by key), and regroups them. A is
+  /// an owned slot; ghostOwner[g] is the owned slot that ghost slot particles.size() + g stands
+  /// for (its loads go there).
+  void setCandidates(const std::vector<CandidateKey>& candidates, const InteractionScene& scene,
+                     const std::vector<std::uint32_t>& ghostOwner);
   /// Keeps the store's optional arrays (rolling, curvature cache) to what the scene's contact
   /// models need, after a model changed: arrays added fresh, arrays no longer needed dropped.
   void fitStore(const InteractionScene& scene);
@@ -104,11 +123,21 @@ class Interactions {
   void compute(const InteractionScene& scene, std::vector<double>& speedBound, ContactStatistics& statistics);
   /// Per particle: F = m (g - c v) plus its contacts' loads, and the torques; per wall this
   /// process's share of its load (walls.size() sums, reset here); the list of force-carrying
-  /// contacts.
+  /// contacts. remote[m]: the load of the m-th contact of setRemoteContacts.
   void reduce(ParticleStore& particles, const Vec3& gravity, double drag, const std::vector<Wall>& walls,
-              std::vector<WallLoadSum>& wallLoads);
-  /// Follows a re-ordering of the particle slots (new slot of old slot i = slotOf[i]).
-  void followSlots(const std::vector<std::uint32_t>& slotOf);
+              std::vector<WallLoadSum>& wallLoads, std::span<const LoadOnB> remote = {});
+
+  /// Migration (docs/architecture.md, "Ghosts"): the contacts whose A leaves this process
+  /// (leaving[slot of A]) removed and returned; then, once the arrivals' contacts are added, the
+  /// next setCandidates carries all of them over by key (until then no other use of the store).
+  ContactStore takeLeaving(const std::vector<std::uint8_t>& leaving);
+  void addArrived(const ContactStore& arrived);
+  /// The contacts other ranks compute whose B is owned here (after setCandidates, which drops
+  /// the last ones): each owned B sums them in key order with its own.
+  void setRemoteContacts(const std::vector<RemoteContact>& contacts, std::size_t owned,
+                         const std::vector<std::uint32_t>& ghostOwner);
+  /// Contact k's load on its B (a particle), as B's sum adds it.
+  LoadOnB loadOnB(std::uint32_t k, const ParticleStore& particles) const;
 
   /// The contacts that carried force in the last computation, in key order.
   auto acting() const {
@@ -124,9 +153,10 @@ class Interactions {
   std::size_t bytes() const;
 
   void writeState(CheckpointWriter& out) const;
-  /// A state written by writeState, every index checked against the scene (its particles
-  /// those of the same checkpoint); throws CheckpointError when the checkpoint does not fit.
-  static Interactions readState(CheckpointReader& in, const InteractionScene& scene);
+  /// A state written by writeState, every index checked against the scene (its particles and
+  /// ghosts those of the same checkpoint); throws CheckpointError when the checkpoint does not fit.
+  static Interactions readState(CheckpointReader& in, const InteractionScene& scene,
+                                const std::vector<std::uint32_t>& ghostOwner);
 
  private:
   /// Contacts of one pair kind and one contact model.
@@ -138,15 +168,20 @@ class Interactions {
   void regroup(const InteractionScene& scene);
   /// keyOrder_ from the store's keys.
   void sortKeys();
-  void indexInvolvement(std::size_t particleCount);
+  void indexInvolvement(std::size_t owned, const std::vector<std::uint32_t>& ghostOwner);
+  /// A ghost's owner, ghostOwner's `remote` (no owner here) passed as this.
+  static constexpr std::uint32_t noOwner = 0xFFFFFFFFu;
 
   ContactStore store_;
   std::vector<Group> groups_;
   std::vector<std::uint32_t> keyOrder_;  ///< the contacts in key order
   static constexpr std::uint32_t bodyBFlag = 0x80000000u;  ///< in involvement_: the particle is body B
-  /// Particle i's contacts, in key order: involvement_[start[i], start[i+1]).
+  static constexpr std::uint32_t remoteFlag = 0x40000000u;  ///< in involvement_: an index into remote_
+  /// Owned particle i's contacts (also those of its ghosts), in key order:
+  /// involvement_[start[i], start[i+1]).
   std::vector<std::uint32_t> involvementStart_;
-  std::vector<std::uint32_t> involvement_;       ///< contact index, | bodyBFlag where i is body B
+  std::vector<std::uint32_t> involvement_;       ///< contact index, | bodyBFlag where i is body B, or remoteFlag | m
+  std::vector<RemoteContact> remote_;            ///< setRemoteContacts' list, in its order
   std::vector<std::uint32_t> interacting_;       ///< the force-carrying contacts, in key order
 };
 

@@ -10,7 +10,7 @@
 
 #include "sqdem/dynamics/wall.hpp"
 #include "sqdem/geometry/mesh_features.hpp"
-#include "sqdem/world/domain.hpp"
+#include "sqdem/geometry/domain.hpp"
 
 namespace sqdem {
 

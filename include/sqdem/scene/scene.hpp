@@ -13,7 +13,7 @@
 
 #include "sqdem/mechanics/elliptic.hpp"
 #include "sqdem/interaction/contact_model.hpp"
-#include "sqdem/world/domain.hpp"
+#include "sqdem/geometry/domain.hpp"
 #include "sqdem/scene/wall_path.hpp"
 #include "sqdem/world/world.hpp"
 

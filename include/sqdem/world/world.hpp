@@ -18,6 +18,9 @@
 #include <vector>
 
 #include "sqdem/distributed/communicator.hpp"
+#include "sqdem/distributed/decomposition.hpp"
+#include "sqdem/distributed/ghosts.hpp"
+#include "sqdem/distributed/remote_loads.hpp"
 #include "sqdem/dynamics/particle_store.hpp"
 #include "sqdem/dynamics/wall.hpp"
 #include "sqdem/geometry/superquadric.hpp"
@@ -72,8 +75,20 @@ class World {
   std::uint32_t addMesh(MeshFeatures mesh);
   const std::vector<MeshFeatures>& meshes() const { return meshes_; }
 
-  /// The ranks this world's particles are divided between (default: one process).
-  void setCommunicator(std::shared_ptr<const Communicator> communicator) { communicator_ = std::move(communicator); }
+  /// The ranks this world's particles are divided between (default: one process). Set before
+  /// the first step, with every rank holding every particle (built from the same scene): each
+  /// keeps those of its sub-domain (recursive coordinate bisection, decomposition.hpp).
+  void setCommunicator(std::shared_ptr<const Communicator> communicator);
+  /// Every rank's sub-domain of the last neighbour-list build (one process: the whole box).
+  const std::vector<SubDomain>& subDomains() const { return parts_; }
+  /// At a neighbour-list build, the sub-domains are cut again by cost (recursive coordinate
+  /// bisection, a particle's cost 1 + its candidate contacts) when the ranks' largest cost
+  /// exceeds their mean by this factor (default 1.2; results do not depend on it).
+  void setRebalanceThreshold(double imbalance) { rebalanceThreshold_ = imbalance; }
+  /// The ranks' largest cost over their mean at the last build (1: balanced), and how many
+  /// times the sub-domains were cut again.
+  double imbalance() const { return imbalance_; }
+  int rebalances() const { return rebalances_; }
   const Communicator& communicator() const { return *communicator_; }
 
   void setGravity(const Vec3& g) { gravity_ = g; }
@@ -81,8 +96,6 @@ class World {
   /// Re-order the particle slots along a Hilbert curve every `rebuilds` neighbour-list builds
   /// (0: never). Results do not change: contacts and sums follow ids, not slots.
   void setReorderInterval(int rebuilds) { reorderInterval_ = rebuilds; }
-  /// Re-orders now (world_reorder.cpp); ids, contacts and their histories follow the particles.
-  void reorderAlongHilbertCurve();
   /// Background drag F = -c m v (c in 1/s, translation only; 0 = off): settling in a viscous
   /// medium with terminal velocity |g|/c, a declared packing aid.
   void setViscousDamping(double c) { viscousDamping_ = c; }
@@ -106,8 +119,10 @@ class World {
   /// Computes contacts and forces at the current state (no integration).
   void computeForces();
 
+  /// The owned particles, slots [0, size()), and their ghosts after them (ghosts()).
   ParticleStore& particles() { return particles_; }
   const ParticleStore& particles() const { return particles_; }
+  const Ghosts& ghosts() const { return ghosts_; }
   const std::vector<Superquadric>& shapes() const { return shapes_; }
   const std::vector<Material>& materials() const { return materials_; }
   std::vector<Wall>& walls() { return walls_; }
@@ -160,6 +175,16 @@ class World {
   /// histories of persisting pairs; kept until the next rebuild (particles or walls moved more
   /// than half the skin), so steps in between copy no contact records.
   void buildCandidates();
+  /// Re-orders the owned slots (no ghosts then), world_reorder.cpp.
+  void reorderAlongHilbertCurve();
+  /// The cut-off the ghosts of particles p cover (m): the largest pair reach, r_a + r_b + range + skin.
+  double ghostCutoff(const ParticleStore& p) const;
+  /// Wraps the owned particles into the box, migrates (and re-balances) them across the ranks,
+  /// makes their ghosts and rebuilds the neighbour list.
+  void rebuildNeighbours();
+  /// The cost of each owned particle (1 + the candidate contacts it is A of); measures the
+  /// imbalance and cuts the sub-domains again past the threshold.
+  void rebalance();
   /// The walls' loads: this process's shares (wallLoads_) summed over the ranks.
   void reduceWallLoads();
   /// Mesh wall w's features within `reach` (m) of particle i, ascending.
@@ -174,6 +199,12 @@ class World {
   Domain domain_;
   NeighbourList neighbours_;
   ParticleStore particles_;
+  Ghosts ghosts_;
+  std::vector<SubDomain> parts_;  ///< every rank's sub-domain
+  RemoteLoads remoteLoads_;
+  std::vector<LoadOnB> remoteLoadsNow_;  ///< this step's loads on this rank's particles from the others
+  double rebalanceThreshold_ = 1.2, imbalance_ = 1.0;
+  int rebalances_ = 0;
   std::vector<Wall> walls_;
   std::vector<WallLoadSum> wallLoads_;
   std::vector<MeshFeatures> meshes_;

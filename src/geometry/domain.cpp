@@ -1,4 +1,4 @@
-#include "sqdem/world/domain.hpp"
+#include "sqdem/geometry/domain.hpp"
 
 #include <cmath>
 
