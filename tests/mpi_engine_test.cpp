@@ -64,9 +64,11 @@ TEST(MpiEngine, APouredBedIsTheSameAtAnyRankCount) {
   long long owned = world.particles().size(), contacts = world.contacts().size();
   owned = ranks->sum(owned);
   contacts = ranks->sum(contacts);
-  std::printf("rank %d of %d, %d thread(s): %zu particles, %zu ghosts, %zu contacts; imbalance %.3f after %d re-balances\n",
+  std::printf("rank %d of %d, %d thread(s): %zu particles, %zu ghosts, %zu contacts; imbalance %.3f after %d re-balances; "
+              "sent %.1f messages and %.0f bytes per step\n",
               ranks->rank(), ranks->size(), omp_get_max_threads(), world.particles().size(), world.particles().ghostCount,
-              world.contacts().size(), world.imbalance(), world.rebalances());
+              world.contacts().size(), world.imbalance(), world.rebalances(),
+              static_cast<double>(ranks->traffic().messages) / steps, static_cast<double>(ranks->traffic().bytes) / steps);
   if (ranks->rank() != 0) return;
 
   omp_set_num_threads(1);

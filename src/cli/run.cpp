@@ -41,9 +41,9 @@ void printSummary(const World& world, const RunReport& report, double wall, cons
   const StepTiming& t = world.timing();
   const auto share = [&](double part) { return wall > 0.0 ? 100.0 * part / wall : 0.0; };
   std::printf("time: contacts (detection and laws) %.1f %%, integration %.1f %%, broad phase %.1f %%, reduction %.1f %%, "
-              "other (stages, output, checks) %.1f %%\n",
-              share(t.contacts), share(t.integration), share(t.broadPhase), share(t.reduction),
-              share(wall - t.contacts - t.integration - t.broadPhase - t.reduction));
+              "ghosts %.1f %%, other (stages, output, checks) %.1f %%\n",
+              share(t.contacts), share(t.integration), share(t.broadPhase), share(t.reduction), share(t.ghosts),
+              share(wall - t.contacts - t.integration - t.broadPhase - t.reduction - t.ghosts));
   std::size_t particleBytes = 0;
   ParticleStore::forEachArray(world.particles(), [&](const auto& array) { particleBytes += array.capacity() * sizeof(array[0]); });
   const std::size_t candidates = world.interactions().store().size();

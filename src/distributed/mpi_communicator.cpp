@@ -73,7 +73,10 @@ class MpiCommunicator final : public Communicator {
     std::exclusive_scan(sendCount.begin(), sendCount.end(), sendAt.begin(), 0);
     std::exclusive_scan(receiveCount.begin(), receiveCount.end(), receiveAt.begin(), 0);
     std::string out, in(static_cast<std::size_t>(receiveAt.back() + receiveCount.back()), '\0');
-    for (const std::string& m : outbox) out += m;
+    for (int r = 0; r < size_; ++r) {
+      out += outbox[r];
+      if (r != rank_ && !outbox[r].empty()) ++traffic_.messages, traffic_.bytes += static_cast<long long>(outbox[r].size());
+    }
     check(MPI_Alltoallv(out.data(), sendCount.data(), sendAt.data(), MPI_BYTE, in.data(), receiveCount.data(),
                         receiveAt.data(), MPI_BYTE, MPI_COMM_WORLD),
           "MPI_Alltoallv");
@@ -87,6 +90,8 @@ class MpiCommunicator final : public Communicator {
     std::vector<MPI_Request> sends(outbox.size());
     for (std::size_t k = 0; k < outbox.size(); ++k) {
       const std::string& m = outbox[k].second;
+      ++traffic_.messages;
+      traffic_.bytes += static_cast<long long>(m.size());
       check(MPI_Isend(m.data(), counts({static_cast<long long>(m.size())})[0], MPI_BYTE, outbox[k].first, exchangeTag,
                       MPI_COMM_WORLD, &sends[k]),
             "MPI_Isend");

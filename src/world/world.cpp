@@ -187,10 +187,14 @@ void World::rebuildNeighbours() {
   ParticleStore& p = particles_;
   ghosts_.drop(p);
   for (std::size_t i = 0; i < p.size(); ++i) p.position[i] = domain_.wrap(p.position[i]);
+  const auto exchangeStart = Clock::now();
   if (communicator_->size() > 1) rebalance();
   migrate(p, interactions_, parts_, *communicator_);
+  timing_.ghosts += seconds(Clock::now() - exchangeStart);
   if (reorderInterval_ > 0 && neighbours_.builds() % reorderInterval_ == 0) reorderAlongHilbertCurve();
+  const auto ghostStart = Clock::now();
   ghosts_.build(p, p.position, domain_, ghostCutoff(p), parts_, *communicator_);
+  timing_.ghosts += seconds(Clock::now() - ghostStart);
   // Laws acting across a gap (roughness) widen every candidate's reach by their range.
   const double range = largestRange();
   if (range > 0.0) {
@@ -220,20 +224,24 @@ void World::computeForces() {
     if (!modelSet_[k]) throw std::logic_error("World: a material pair has no contact model");
   }
   const auto start = Clock::now();
+  const double ghostsBefore = timing_.ghosts;
   ParticleStore& p = particles_;
   if (communicator_->any(neighbours_.needsRebuild(p)) || wallsMovedHalfSkin()) {
     rebuildNeighbours();
     buildCandidates();
   } else {
     ghosts_.refresh(p, *communicator_);
+    timing_.ghosts += seconds(Clock::now() - start);
   }
 
   const auto contactsStart = Clock::now();
-  timing_.broadPhase += seconds(contactsStart - start);
+  timing_.broadPhase += seconds(contactsStart - start) - (timing_.ghosts - ghostsBefore);
   interactions_.compute(interactionScene(), p.speedBound, statistics_);
-  const auto reduction = Clock::now();
-  timing_.contacts += seconds(reduction - contactsStart);
+  const auto loadsStart = Clock::now();
+  timing_.contacts += seconds(loadsStart - contactsStart);
   if (communicator_->size() > 1) remoteLoadsNow_ = remoteLoads_.exchange(interactions_, p, *communicator_);
+  const auto reduction = Clock::now();
+  timing_.ghosts += seconds(reduction - loadsStart);
   interactions_.reduce(p, gravity_, viscousDamping_, walls_, wallLoads_, remoteLoadsNow_);
   reduceWallLoads();
   forcesCurrent_ = true;

@@ -24,6 +24,13 @@ class Communicator {
  public:
   virtual ~Communicator() = default;
 
+  /// The messages this process sent to other ranks and their bytes, since it started.
+  struct Traffic {
+    long long messages = 0;
+    long long bytes = 0;
+  };
+  const Traffic& traffic() const { return traffic_; }
+
   virtual int rank() const = 0;
   virtual int size() const = 0;
 
@@ -68,6 +75,9 @@ class Communicator {
     sum(std::span(&value, 1));
     return value;
   }
+
+ protected:
+  mutable Traffic traffic_;  ///< counted by the exchanges
 };
 
 /// One process: the ranks' reduction is the process's own value.

@@ -49,6 +49,9 @@ struct StepTiming {
   double broadPhase = 0.0;   ///< neighbour list, candidate list, history carry-over
   double contacts = 0.0;     ///< detectors and contact laws (the fused kernels)
   double reduction = 0.0;    ///< forces and torques per particle and wall
+  /// ghosts made and refreshed, particles migrated, loads sent across ranks: across ranks the
+  /// communication (not counted in the others)
+  double ghosts = 0.0;
 };
 
 class World {
