@@ -19,12 +19,12 @@ bool deepInside(const SubDomain& part, const Vec3& x, double cutoff) {
   return (x.array() - part.lo.array() > cutoff).all() && (part.hi.array() - x.array() > cutoff).all();
 }
 
-/// The arrays a refresh carries besides the position: orientation, momenta, velocities.
+/// The arrays a refresh carries besides the position: what the contacts read of a ghost
+/// (orientation, velocities; not the momenta, which only the owner integrates).
 template <typename F>
 void forEachMovingArray(ParticleStore& p, F&& f) {
   f(p.orientation);
   f(p.velocity);
-  f(p.conjugateMomentum);
   f(p.angularVelocity);
 }
 

@@ -51,7 +51,7 @@ ContactStatistics& ContactStatistics::operator+=(const ContactStatistics& o) {
 
 void Interactions::setCandidates(const std::vector<CandidateKey>& candidates, const InteractionScene& scene,
                                  const std::vector<std::uint32_t>& ghostOwner) {
-  if (candidates.size() >= remoteFlag) throw std::length_error("Interactions: more than 2^30 candidate contacts");
+  if (candidates.size() > contactMask) throw std::length_error("Interactions: more than 2^29 candidate contacts");
   const std::vector<std::uint32_t>& id = scene.particles.id;
   ContactStore next = emptyStore(scene);
   next.reserve(candidates.size());
@@ -92,7 +92,7 @@ void Interactions::addArrived(const ContactStore& arrived) {
 
 void Interactions::setRemoteContacts(const std::vector<RemoteContact>& contacts, std::size_t owned,
                                      const std::vector<std::uint32_t>& ghostOwner) {
-  if (contacts.size() >= remoteFlag) throw std::length_error("Interactions: more than 2^30 remote contacts");
+  if (contacts.size() > contactMask) throw std::length_error("Interactions: more than 2^29 remote contacts");
   remote_ = contacts;
   indexInvolvement(owned, ghostOwner);
 }
@@ -158,7 +158,7 @@ void Interactions::indexInvolvement(std::size_t owned, const std::vector<std::ui
   for (const std::uint32_t k : keyOrder_) {
     remoteUpTo(store_.key(k));
     involvement_[fill[store_.a[k]]++] = k;
-    if (ownerOfB(k) != noOwner) involvement_[fill[ownerOfB(k)]++] = k | bodyBFlag;
+    if (ownerOfB(k) != noOwner) involvement_[fill[ownerOfB(k)]++] = k | bodyBFlag | (store_.b[k] >= owned ? imageFlag : 0u);
   }
   remoteUpTo(ContactKey{~std::uint64_t{0}, ~std::uint32_t{0}});
 }

@@ -15,13 +15,13 @@ void Interactions::reduce(ParticleStore& p, const Vec3& gravity, double drag, co
     p.torque[i].setZero();
     for (std::uint32_t m = involvementStart_[i]; m < involvementStart_[i + 1]; ++m) {
       if ((involvement_[m] & remoteFlag) != 0) {  // computed where its A is owned (loadOnB)
-        const LoadOnB& load = remote[involvement_[m] & ~remoteFlag];
+        const LoadOnB& load = remote[involvement_[m] & contactMask];
         if (!load.acting) continue;
         p.force[i] += load.force;
         p.torque[i] += load.torque;
         continue;
       }
-      const std::uint32_t k = involvement_[m] & ~bodyBFlag;
+      const std::uint32_t k = involvement_[m] & contactMask;
       if (!s.acting[k]) continue;
       const Vec3& force = s.force[k];
       const Vec3 moment = s.withRolling ? s.moment[k] : Vec3::Zero();
@@ -30,7 +30,8 @@ void Interactions::reduce(ParticleStore& p, const Vec3& gravity, double drag, co
         p.torque[i] -= (s.point[k] - p.position[i]).cross(force) + moment;
       } else {
         p.force[i] += force;
-        p.torque[i] += (s.point[k] - p.position[s.b[k]]).cross(force) + moment;  // B's slot: i or its image
+        const Vec3& centre = (involvement_[m] & imageFlag) != 0 ? p.position[s.b[k]] : p.position[i];  // i's image
+        p.torque[i] += (s.point[k] - centre).cross(force) + moment;
       }
     }
   }

@@ -38,8 +38,9 @@ class Ghosts {
              const std::vector<SubDomain>& parts, const Communicator& ranks);
   /// Removes the ghosts from the store.
   void drop(ParticleStore& p);
-  /// Copies the owners' moving state (position + offset, orientation, momenta, velocities) to
-  /// their ghosts, here and on the other ranks. Collective.
+  /// Copies the owners' moving state (position + offset, orientation, velocities) to their
+  /// ghosts, here and on the other ranks. Collective. (A ghost's other fields are those of the
+  /// build: the contacts do not read its momenta.)
   void refresh(ParticleStore& p, const Communicator& ranks) const;
   /// The owned slot that slot s of p stands for: s itself when owned, `remote` for a ghost of
   /// another rank's particle.

@@ -177,10 +177,13 @@ class Interactions {
   std::vector<std::uint32_t> keyOrder_;  ///< the contacts in key order
   static constexpr std::uint32_t bodyBFlag = 0x80000000u;  ///< in involvement_: the particle is body B
   static constexpr std::uint32_t remoteFlag = 0x40000000u;  ///< in involvement_: an index into remote_
+  static constexpr std::uint32_t imageFlag = 0x20000000u;   ///< in involvement_: B is the particle's image (a ghost slot)
+  static constexpr std::uint32_t contactMask = imageFlag - 1;  ///< the contact index in an involvement entry
   /// Owned particle i's contacts (also those of its ghosts), in key order:
   /// involvement_[start[i], start[i+1]).
   std::vector<std::uint32_t> involvementStart_;
-  std::vector<std::uint32_t> involvement_;       ///< contact index, | bodyBFlag where i is body B, or remoteFlag | m
+  /// contact index, | bodyBFlag where i is body B (| imageFlag through its image), or remoteFlag | m
+  std::vector<std::uint32_t> involvement_;
   std::vector<RemoteContact> remote_;            ///< setRemoteContacts' list, in its order
   std::vector<std::uint32_t> interacting_;       ///< the force-carrying contacts, in key order
 };
