@@ -2,7 +2,7 @@
 
 #include <array>
 
-#include "sqdem/archive/checkpoint_file.hpp"
+#include "particle_record.hpp"
 
 namespace sqdem {
 namespace {
@@ -37,7 +37,7 @@ void Ghosts::drop(ParticleStore& p) {
   localOwner_.clear();
   origin_.clear();
   images_.clear();
-  imageSlot_.clear();
+  firstImage_ = 0;
   sends_.clear();
   sources_.clear();
   firstOf_.clear();
@@ -47,17 +47,18 @@ void Ghosts::build(ParticleStore& p, std::span<const Vec3> at, const Domain& dom
                    const std::vector<SubDomain>& parts, const Communicator& ranks) {
   drop(p);
   const int me = ranks.rank(), count = ranks.size();
+  // The image offsets along each direction: 0, and -L, +L along a periodic one.
   const Vec3 L = domain.length();
+  std::array<std::array<double, 3>, 3> offsets{};
+  std::array<int, 3> n{};
+  for (int d = 0; d < 3; ++d) {
+    offsets[d][n[d]++] = 0.0;
+    if (domain.periodic[d]) offsets[d][n[d]++] = -L(d), offsets[d][n[d]++] = L(d);
+  }
   // The copies for every rank first (`at` may be the store's own positions), then the ghosts.
   std::vector<std::vector<Copy>> copies(count);
   for (std::uint32_t i = 0; i < p.size(); ++i) {
     if (deepInside(parts[me], at[i], cutoff)) continue;
-    std::array<std::array<double, 3>, 3> offsets{};
-    std::array<int, 3> n{};
-    for (int d = 0; d < 3; ++d) {
-      offsets[d][n[d]++] = 0.0;
-      if (domain.periodic[d]) offsets[d][n[d]++] = -L(d), offsets[d][n[d]++] = L(d);
-    }
     for (int z = 0; z < n[2]; ++z) {
       for (int y = 0; y < n[1]; ++y) {
         for (int x = 0; x < n[0]; ++x) {
@@ -77,7 +78,7 @@ void Ghosts::build(ParticleStore& p, std::span<const Vec3> at, const Domain& dom
     if (r == me || copies[r].empty()) continue;
     CheckpointWriter out;
     for (const Copy& c : copies[r]) {
-      ParticleStore::forEachArray(p, [&](const auto& array) { out.put(array[c.slot]); });
+      detail::writeParticle(out, p, c.slot);
       out.put(c.slot);
       out.put(Vec3(p.position[c.slot] + c.offset));
     }
@@ -88,13 +89,13 @@ void Ghosts::build(ParticleStore& p, std::span<const Vec3> at, const Domain& dom
   for (int r = 0; r < count; ++r) {
     const auto first = static_cast<std::uint32_t>(localOwner_.size());
     if (r == me) {
+      firstImage_ = first;
       for (const Copy& c : copies[me]) {
         ParticleStore::forEachArray(p, [&](auto& array) {
           const auto value = array[c.slot];  // a copy: push_back may move the array
           array.push_back(value);
         });
         p.position.back() = p.position[c.slot] + c.offset;
-        imageSlot_.push_back(static_cast<std::uint32_t>(localOwner_.size()));
         images_.push_back(c);
         localOwner_.push_back(c.slot);
         origin_.push_back({me, c.slot});
@@ -104,11 +105,7 @@ void Ghosts::build(ParticleStore& p, std::span<const Vec3> at, const Domain& dom
     if (inbox[r].empty()) continue;
     CheckpointReader in(inbox[r]);
     while (in.left() > 0) {
-      ParticleStore::forEachArray(p, [&](auto& array) {
-        typename std::remove_reference_t<decltype(array)>::value_type value;
-        in.get(value);
-        array.push_back(value);
-      });
+      detail::appendParticle(in, p);
       Origin origin{r, 0};
       in.get(origin.slot);
       in.get(p.position.back());
@@ -125,7 +122,7 @@ void Ghosts::refresh(ParticleStore& p, const Communicator& ranks) const {
   const std::size_t owned = p.size();
   for (std::size_t k = 0; k < images_.size(); ++k) {
     const std::uint32_t i = images_[k].slot;
-    const std::size_t s = owned + imageSlot_[k];
+    const std::size_t s = owned + firstImage_ + k;
     p.position[s] = p.position[i] + images_[k].offset;
     forEachMovingArray(p, [&](auto& array) { array[s] = array[i]; });
   }

@@ -1,6 +1,7 @@
 #include "sqdem/distributed/migration.hpp"
 
-#include "sqdem/archive/checkpoint_file.hpp"
+#include "particle_record.hpp"
+#include "sqdem/math/permutation.hpp"
 
 namespace sqdem {
 
@@ -11,58 +12,41 @@ std::size_t migrate(ParticleStore& p, Interactions& contacts, const std::vector<
   std::vector<int> to(p.size());
   std::vector<std::uint8_t> leaving(p.size(), 0);
   std::vector<std::vector<std::uint32_t>> particlesTo(count);
+  std::vector<std::uint32_t> staying;
   for (std::uint32_t i = 0; i < p.size(); ++i) {
     to[i] = ownerOf(parts, p.position[i]);
     leaving[i] = to[i] != me;
-    if (leaving[i]) particlesTo[to[i]].push_back(i);
+    (leaving[i] ? particlesTo[to[i]] : staying).push_back(i);
   }
-  const ContactStore gone = contacts.takeLeaving(leaving);
+  const ContactStore& s = contacts.store();
   std::vector<std::vector<std::uint32_t>> contactsTo(count);
-  for (std::uint32_t k = 0; k < gone.size(); ++k) contactsTo[to[gone.a[k]]].push_back(k);
+  for (std::uint32_t k = 0; k < s.size(); ++k) {
+    if (leaving[s.a[k]]) contactsTo[to[s.a[k]]].push_back(k);
+  }
   // A message: the particles (every per-particle field), then their contacts (every kept array).
   std::vector<std::string> outbox(count);
-  std::size_t left = 0;
   for (int r = 0; r < count; ++r) {
     if (particlesTo[r].empty()) continue;
     CheckpointWriter out;
     out.put(static_cast<std::uint64_t>(particlesTo[r].size()));
-    for (const std::uint32_t i : particlesTo[r]) {
-      ParticleStore::forEachArray(p, [&](const auto& array) { out.put(array[i]); });
-    }
+    for (const std::uint32_t i : particlesTo[r]) detail::writeParticle(out, p, i);
     out.put(static_cast<std::uint64_t>(contactsTo[r].size()));
-    for (const std::uint32_t k : contactsTo[r]) gone.write(k, out);
+    for (const std::uint32_t k : contactsTo[r]) s.write(k, out);
     outbox[r] = out.bytes();
-    left += particlesTo[r].size();
   }
-  if (left > 0) {  // the staying particles, in their order
-    std::vector<std::uint32_t> stay;
-    for (std::uint32_t i = 0; i < p.size(); ++i) {
-      if (!leaving[i]) stay.push_back(i);
-    }
-    ParticleStore::forEachArray(p, [&](auto& array) {
-      for (std::size_t m = 0; m < stay.size(); ++m) array[m] = array[stay[m]];
-      array.resize(stay.size());
-    });
-  }
+  const std::size_t left = p.size() - staying.size();
+  contacts.removeLeaving(leaving);
+  if (left > 0) ParticleStore::forEachArray(p, [&](auto& array) { permute(array, staying); });  // in their order
   const std::vector<std::string> inbox = ranks.exchangeAll(std::move(outbox));
-  ContactStore arrived = gone;
-  arrived.retain([](std::size_t) { return false; });  // empty, the same optional arrays
   for (int r = 0; r < count; ++r) {
     if (inbox[r].empty()) continue;
     CheckpointReader in(inbox[r]);
     std::uint64_t n = 0;
     in.get(n);
-    for (std::uint64_t m = 0; m < n; ++m) {
-      ParticleStore::forEachArray(p, [&](auto& array) {
-        typename std::remove_reference_t<decltype(array)>::value_type value;
-        in.get(value);
-        array.push_back(value);
-      });
-    }
+    for (std::uint64_t m = 0; m < n; ++m) detail::appendParticle(in, p);
     in.get(n);
-    for (std::uint64_t m = 0; m < n; ++m) arrived.read(in);
+    contacts.readArrived(in, n);
   }
-  contacts.addArrived(arrived);
   return left;
 }
 

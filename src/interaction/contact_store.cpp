@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "sqdem/archive/checkpoint_file.hpp"
+#include "sqdem/math/permutation.hpp"
 
 namespace sqdem {
 namespace {
@@ -58,6 +59,12 @@ void ContactStore::carryOver(std::size_t k, const ContactStore& other, std::size
                                                                : void()),
      ...);
   }, stateArrays);
+}
+
+void ContactStore::permute(const std::vector<std::uint32_t>& order) {
+  forEachArray(*this, [&](auto& array) {
+    if (keeps(&array)) sqdem::permute(array, order);
+  });
 }
 
 void ContactStore::write(std::size_t k, CheckpointWriter& out) const {

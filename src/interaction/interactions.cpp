@@ -1,5 +1,7 @@
 #include "sqdem/interaction/interactions.hpp"
 
+#include "sqdem/archive/checkpoint_file.hpp"
+
 #include <algorithm>
 #include <map>
 #include <numeric>
@@ -74,19 +76,17 @@ void Interactions::setCandidates(const std::vector<CandidateKey>& candidates, co
   indexInvolvement(scene.particles.size(), ghostOwner);
 }
 
-ContactStore Interactions::takeLeaving(const std::vector<std::uint8_t>& leaving) {
-  ContactStore gone = store_;
-  gone.retain([&](std::size_t k) { return leaving[store_.a[k]] != 0; });
-  store_.retain([&](std::size_t k) { return leaving[store_.a[k]] == 0; });
+void Interactions::removeLeaving(const std::vector<std::uint8_t>& leaving) {
+  std::vector<std::uint32_t> staying;
+  for (std::uint32_t k = 0; k < store_.size(); ++k) {
+    if (leaving[store_.a[k]] == 0) staying.push_back(k);
+  }
+  store_.permute(staying);
   sortKeys();
-  return gone;
 }
 
-void Interactions::addArrived(const ContactStore& arrived) {
-  for (std::size_t k = 0; k < arrived.size(); ++k) {
-    store_.add(arrived.key(k), arrived.a[k], arrived.b[k], arrived.wallImage[k]);
-    store_.carryOver(store_.size() - 1, arrived, k);
-  }
+void Interactions::readArrived(CheckpointReader& in, std::uint64_t count) {
+  for (std::uint64_t m = 0; m < count; ++m) store_.read(in);
   sortKeys();
 }
 
@@ -95,13 +95,6 @@ void Interactions::setRemoteContacts(const std::vector<RemoteContact>& contacts,
   if (contacts.size() > contactMask) throw std::length_error("Interactions: more than 2^29 remote contacts");
   remote_ = contacts;
   indexInvolvement(owned, ghostOwner);
-}
-
-LoadOnB Interactions::loadOnB(std::uint32_t k, const ParticleStore& p) const {
-  const ContactStore& s = store_;
-  if (!s.acting[k]) return {};
-  const Vec3 moment = s.withRolling ? s.moment[k] : Vec3::Zero();
-  return {s.force[k], (s.point[k] - p.position[s.b[k]]).cross(s.force[k]) + moment, 1};
 }
 
 void Interactions::sortKeys() {
@@ -133,16 +126,16 @@ void Interactions::regroup(const InteractionScene& scene) {
 }
 
 void Interactions::indexInvolvement(std::size_t owned, const std::vector<std::uint32_t>& ghostOwner) {
-  // B's owned slot here (noOwner: the contact's B is owned on another rank, which sums it).
+  // B's owned slot here (remoteGhost: the contact's B is owned on another rank, which sums it).
   const auto ownerOfB = [&](std::size_t k) {
-    return store_.onWall(k) ? noOwner : store_.b[k] < owned ? store_.b[k] : ghostOwner[store_.b[k] - owned];
+    return store_.onWall(k) ? remoteGhost : store_.b[k] < owned ? store_.b[k] : ghostOwner[store_.b[k] - owned];
   };
   // Counting sort of the contacts by particle, in key order within each particle: the store's
   // and the remote ones merged by key.
   involvementStart_.assign(owned + 1, 0);
   for (std::size_t k = 0; k < store_.size(); ++k) {
     ++involvementStart_[store_.a[k] + 1];
-    if (ownerOfB(k) != noOwner) ++involvementStart_[ownerOfB(k) + 1];
+    if (ownerOfB(k) != remoteGhost) ++involvementStart_[ownerOfB(k) + 1];
   }
   for (const RemoteContact& r : remote_) ++involvementStart_[r.slot + 1];
   std::vector<std::uint32_t> remoteOrder(remote_.size());
@@ -158,7 +151,7 @@ void Interactions::indexInvolvement(std::size_t owned, const std::vector<std::ui
   for (const std::uint32_t k : keyOrder_) {
     remoteUpTo(store_.key(k));
     involvement_[fill[store_.a[k]]++] = k;
-    if (ownerOfB(k) != noOwner) involvement_[fill[ownerOfB(k)]++] = k | bodyBFlag | (store_.b[k] >= owned ? imageFlag : 0u);
+    if (ownerOfB(k) != remoteGhost) involvement_[fill[ownerOfB(k)]++] = k | bodyBFlag | (store_.b[k] >= owned ? imageFlag : 0u);
   }
   remoteUpTo(ContactKey{~std::uint64_t{0}, ~std::uint32_t{0}});
 }

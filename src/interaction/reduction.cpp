@@ -4,6 +4,20 @@
 #include "sqdem/interaction/interactions.hpp"
 
 namespace sqdem {
+namespace {
+
+/// Contact k's load on B as a torque about centre: its force's moment and the pure moment (B's torque
+/// about its centre; A's, about its own, with the sign reversed).
+Vec3 torqueAbout(const ContactStore& s, std::uint32_t k, const Vec3& centre) {
+  return (s.point[k] - centre).cross(s.force[k]) + (s.withRolling ? s.moment[k] : Vec3::Zero());
+}
+
+}  // namespace
+
+LoadOnB Interactions::loadOnB(std::uint32_t k, const ParticleStore& p) const {
+  if (!store_.acting[k]) return {};
+  return {store_.force[k], torqueAbout(store_, k, p.position[store_.b[k]]), 1};
+}
 
 void Interactions::reduce(ParticleStore& p, const Vec3& gravity, double drag, const std::vector<Wall>& walls,
                           std::vector<WallLoadSum>& wallLoads, std::span<const LoadOnB> remote) {
@@ -23,15 +37,13 @@ void Interactions::reduce(ParticleStore& p, const Vec3& gravity, double drag, co
       }
       const std::uint32_t k = involvement_[m] & contactMask;
       if (!s.acting[k]) continue;
-      const Vec3& force = s.force[k];
-      const Vec3 moment = s.withRolling ? s.moment[k] : Vec3::Zero();
       if ((involvement_[m] & bodyBFlag) == 0) {  // i is body A
-        p.force[i] -= force;
-        p.torque[i] -= (s.point[k] - p.position[i]).cross(force) + moment;
+        p.force[i] -= s.force[k];
+        p.torque[i] -= torqueAbout(s, k, p.position[i]);
       } else {
-        p.force[i] += force;
+        p.force[i] += s.force[k];
         const Vec3& centre = (involvement_[m] & imageFlag) != 0 ? p.position[s.b[k]] : p.position[i];  // i's image
-        p.torque[i] += (s.point[k] - centre).cross(force) + moment;
+        p.torque[i] += torqueAbout(s, k, centre);
       }
     }
   }

@@ -6,12 +6,12 @@
 #include <stdexcept>
 
 #include "sqdem/distributed/migration.hpp"
-#include "sqdem/math/permutation.hpp"
 #include "sqdem/dynamics/integrator.hpp"
 #include "sqdem/dynamics/rayleigh_time.hpp"
 #include "sqdem/mechanics/collision_time.hpp"
 #include "sqdem/mechanics/damping.hpp"
 #include "sqdem/mechanics/elliptic.hpp"
+#include "sqdem/math/permutation.hpp"
 
 namespace sqdem {
 namespace {
@@ -107,7 +107,7 @@ void World::buildCandidates() {
     for (; pair != pairsEnd && pair->a == i; ++pair) next.push_back({i, pair->b});
     for (std::uint32_t w = 0; w < walls_.size(); ++w) {
       // A cylinder across a periodic direction acts through its image nearest the particle
-      // (the contact's shift); planes are parallel to the periodic directions.
+      // (the contact's wall image); planes are parallel to the periodic directions.
       const Wall& wall = walls_[w];
       const double reach = p.boundingRadius[i] + range + skin;
       if (wall.shape == WallShape::Mesh) {

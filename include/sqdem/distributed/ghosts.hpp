@@ -21,13 +21,14 @@
 #include "sqdem/distributed/decomposition.hpp"
 #include "sqdem/dynamics/particle_store.hpp"
 #include "sqdem/geometry/domain.hpp"
+#include "sqdem/interaction/interactions.hpp"
 
 namespace sqdem {
 
 class Ghosts {
  public:
-  /// ownerOf's answer for a ghost whose particle another rank owns.
-  static constexpr std::uint32_t remote = 0xFFFFFFFFu;
+  /// localOwners' entry for a ghost whose particle another rank owns (what Interactions reads).
+  static constexpr std::uint32_t remote = Interactions::remoteGhost;
 
   /// Replaces the ghosts: every image x + o of an owned particle at `at` (one per owned slot,
   /// wrapped into the box; may be p.position) that rank r's sub-domain parts[r], widened by
@@ -42,11 +43,6 @@ class Ghosts {
   /// ghosts, here and on the other ranks. Collective. (A ghost's other fields are those of the
   /// build: the contacts do not read its momenta.)
   void refresh(ParticleStore& p, const Communicator& ranks) const;
-  /// The owned slot that slot s of p stands for: s itself when owned, `remote` for a ghost of
-  /// another rank's particle.
-  std::uint32_t ownerOf(const ParticleStore& p, std::uint32_t s) const {
-    return s < p.size() ? s : localOwner_[s - p.size()];
-  }
   /// Per ghost (slot p.size() + g), the owned slot it stands for, or `remote`.
   const std::vector<std::uint32_t>& localOwners() const { return localOwner_; }
   /// Where a ghost's particle is owned: its rank and its slot there.
@@ -76,7 +72,7 @@ class Ghosts {
   std::vector<std::uint32_t> localOwner_;  ///< per ghost, its owner's slot here, or remote
   std::vector<Origin> origin_;             ///< per ghost, its owner's rank and slot
   std::vector<Copy> images_;               ///< this rank's ghosts of its own particles, in ghost order
-  std::vector<std::uint32_t> imageSlot_;   ///< ... and the ghost slot each goes to (offset from p.size())
+  std::uint32_t firstImage_ = 0;           ///< ... the first of them (offset from p.size())
   std::vector<std::pair<int, std::vector<Copy>>> sends_;  ///< per other rank, the copies it gets
   std::vector<int> sources_;               ///< the other ranks that send this one ghosts
   std::vector<std::uint32_t> firstOf_;     ///< ... and the first ghost of each (offset from p.size())

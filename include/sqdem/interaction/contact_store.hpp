@@ -163,19 +163,9 @@ struct ContactStore {
   void write(std::size_t k, CheckpointWriter& out) const;
   /// Appends a record written by write() of a store with the same optional arrays.
   void read(CheckpointReader& in);
-  /// Keeps the contacts k for which keep(k), in their order.
-  template <typename Keep>
-  void retain(Keep&& keep) {
-    std::vector<std::size_t> kept;
-    for (std::size_t k = 0; k < size(); ++k) {
-      if (keep(k)) kept.push_back(k);
-    }
-    forEachArray(*this, [&](auto& array) {
-      if (!keeps(&array)) return;
-      for (std::size_t m = 0; m < kept.size(); ++m) array[m] = array[kept[m]];
-      array.resize(kept.size());
-    });
-  }
+  /// The store re-ordered: contact k of the result is contact order[k] of this one (order may
+  /// name a subset: the others are dropped).
+  void permute(const std::vector<std::uint32_t>& order);
 };
 
 /// Read access to one contact of a store (outputs, tests).

@@ -109,10 +109,12 @@ ContactStore emptyStore(const InteractionScene& scene);
 
 class Interactions {
  public:
+  /// ghostOwner's entry for a ghost whose particle another rank owns (that rank sums its loads).
+  static constexpr std::uint32_t remoteGhost = 0xFFFFFFFFu;
   /// Replaces the candidates (unique keys, in any order: the store keeps theirs), carrying over
   /// the geometry and histories of pairs that persist (matched by key), and regroups them. A is
   /// an owned slot; ghostOwner[g] is the owned slot that ghost slot particles.size() + g stands
-  /// for (its loads go there).
+  /// for (its loads go there), or remoteGhost.
   void setCandidates(const std::vector<CandidateKey>& candidates, const InteractionScene& scene,
                      const std::vector<std::uint32_t>& ghostOwner);
   /// Keeps the store's optional arrays (rolling, curvature cache) to what the scene's contact
@@ -128,10 +130,11 @@ class Interactions {
               std::vector<WallLoadSum>& wallLoads, std::span<const LoadOnB> remote = {});
 
   /// Migration (docs/architecture.md, "Ghosts"): the contacts whose A leaves this process
-  /// (leaving[slot of A]) removed and returned; then, once the arrivals' contacts are added, the
-  /// next setCandidates carries all of them over by key (until then no other use of the store).
-  ContactStore takeLeaving(const std::vector<std::uint8_t>& leaving);
-  void addArrived(const ContactStore& arrived);
+  /// (leaving[slot of A], written out by the caller) removed; `count` contacts that arrived with
+  /// their A read from a record (ContactStore::write). The next setCandidates carries all of them
+  /// over by key (until then no other use of the store).
+  void removeLeaving(const std::vector<std::uint8_t>& leaving);
+  void readArrived(CheckpointReader& in, std::uint64_t count);
   /// The contacts other ranks compute whose B is owned here (after setCandidates, which drops
   /// the last ones): each owned B sums them in key order with its own.
   void setRemoteContacts(const std::vector<RemoteContact>& contacts, std::size_t owned,
@@ -169,8 +172,6 @@ class Interactions {
   /// keyOrder_ from the store's keys.
   void sortKeys();
   void indexInvolvement(std::size_t owned, const std::vector<std::uint32_t>& ghostOwner);
-  /// A ghost's owner, ghostOwner's `remote` (no owner here) passed as this.
-  static constexpr std::uint32_t noOwner = 0xFFFFFFFFu;
 
   ContactStore store_;
   std::vector<Group> groups_;
