@@ -61,7 +61,9 @@ void writeFile(const fs::path& p, const std::string& bytes) {
 /// Reads the file into a fresh world: true when accepted.
 bool accepted(const fs::path& p) {
   World world = makeWorld();
-  const std::string payload = readCheckpointFile(p, {World::stateFingerprint(), sceneHash});
+  const CheckpointContents file = readCheckpointFile(p, World::stateFingerprint());
+  if (file.scene != sceneHash) throw CheckpointError("another scene");  // the run checkpoint's check
+  const std::string& payload = file.payload;
   CheckpointReader reader(payload);
   world.readState(reader);
   return true;
@@ -74,11 +76,13 @@ TEST(Checkpoint, RoundTripRestoresTheState) {
   writeCheckpointFile(file, {World::stateFingerprint(), sceneHash}, payloadOf(original));
   World restored = makeWorld();
   for (int s = 0; s < 5; ++s) restored.step();  // a different state, overwritten by the read
-  const std::string payload = readCheckpointFile(file, {World::stateFingerprint(), sceneHash});
+  const CheckpointContents contents = readCheckpointFile(file, World::stateFingerprint());
+  EXPECT_EQ(contents.scene, sceneHash);  // the scene it was written for, for its reader to compare
+  const std::string& payload = contents.payload;
   CheckpointReader reader(payload);
   restored.readState(reader);
   EXPECT_EQ(payloadOf(restored), payloadOf(original));
-  EXPECT_THROW(readCheckpointFile(file, {World::stateFingerprint(), sceneHash + 1}), CheckpointError);  // another scene
+  EXPECT_THROW(readCheckpointFile(file, World::stateFingerprint() + 1), CheckpointError);  // another build
   fs::remove(file);
 }
 

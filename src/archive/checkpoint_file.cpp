@@ -32,12 +32,6 @@ T field(std::string_view header, std::size_t& at) {
   return value;
 }
 
-std::string hex(std::uint64_t v) {
-  char buffer[20];
-  std::snprintf(buffer, sizeof buffer, "%016llx", static_cast<unsigned long long>(v));
-  return buffer;
-}
-
 }  // namespace
 
 Fingerprint& Fingerprint::bytes(const void* data, std::size_t size) {
@@ -63,7 +57,7 @@ void writeCheckpointFile(const std::filesystem::path& path, const CheckpointStam
   writeFileAtomically(path, header.bytes() + std::string(payload));
 }
 
-std::string readCheckpointFile(const std::filesystem::path& path, const CheckpointStamp& stamp) {
+CheckpointContents readCheckpointFile(const std::filesystem::path& path, std::uint64_t build) {
   const auto fail = [&](const std::string& what) { return CheckpointError(path.string() + ": " + what); };
   std::error_code error;
   if (!std::filesystem::is_regular_file(path, error)) throw fail("not a checkpoint file (missing, or not a regular file)");
@@ -74,18 +68,14 @@ std::string readCheckpointFile(const std::filesystem::path& path, const Checkpoi
   if (!in || std::memcmp(header.data(), magic, sizeof magic) != 0) throw fail("not an sqdem checkpoint (no header)");
   std::size_t at = sizeof magic;
   const auto version = field<std::uint32_t>(header, at);
-  const auto build = field<std::uint64_t>(header, at);
+  const auto writer = field<std::uint64_t>(header, at);
   const auto scene = field<std::uint64_t>(header, at);
   const auto size = field<std::uint64_t>(header, at);
   const auto crc = field<std::uint32_t>(header, at);
   if (version != formatVersion) {
     throw fail("checkpoint format " + std::to_string(version) + ", this build reads format " + std::to_string(formatVersion));
   }
-  if (build != stamp.build) throw fail("written by another build of sqdem (its record layout differs); rerun the scene");
-  if (scene != stamp.scene) {
-    throw fail("written for another scene (scene fingerprint " + hex(scene) + ", this scene " + hex(stamp.scene) +
-               "): resume with the scene file that wrote it, unchanged but for its 'output' keys");
-  }
+  if (writer != build) throw fail("written by another build of sqdem (its record layout differs); rerun the scene");
   const auto fileSize = std::filesystem::file_size(path, error);
   if (error || size > largestPayload || fileSize != headerSize + size) {
     throw fail("checkpoint is truncated or padded (header announces " + std::to_string(size) + " payload bytes, file has " +
@@ -95,7 +85,7 @@ std::string readCheckpointFile(const std::filesystem::path& path, const Checkpoi
   in.read(payload.data(), static_cast<std::streamsize>(size));
   if (!in) throw fail("cannot read the checkpoint's payload");
   if (crc32(payload) != crc) throw fail("checkpoint is corrupt (checksum mismatch)");
-  return payload;
+  return {scene, std::move(payload)};
 }
 
 }  // namespace sqdem

@@ -13,28 +13,34 @@ double seconds(std::chrono::steady_clock::duration d) { return std::chrono::dura
 
 }  // namespace
 
-ProgressPrinter::ProgressPrinter(const Scene& scene, double recordEvery)
-    : scene_(scene), terminal_(isatty(fileno(stderr))), recordEvery_(recordEvery) {}
+ProgressPrinter::ProgressPrinter(const Scene& scene, double recordEvery, bool speaks)
+    : scene_(scene), speaks_(speaks), terminal_(speaks && isatty(fileno(stderr))), recordEvery_(recordEvery) {}
 
-void ProgressPrinter::stepped(const StageSpec& stage, long step, long steps, const World& world) {
-  ++steps_;
+bool ProgressPrinter::wantsUpdate() {
+  const double since = seconds(Clock::now() - lastPrint_);
+  return speaks_ && (terminal_ ? since > 0.5 : recordEvery_ > 0.0 && since >= recordEvery_);
+}
+
+void ProgressPrinter::update(const StageSpec& stage, long step, long steps, long stepsThisRun, const World& world) {
   const auto now = Clock::now();
-  if (terminal_ ? seconds(now - lastPrint_) <= 0.5 : recordEvery_ <= 0.0 || seconds(now - lastPrint_) < recordEvery_) return;
   lastPrint_ = now;
-  recent_.emplace_back(now, steps_);
+  recent_.emplace_back(now, stepsThisRun);
   while (recent_.size() > 2 && seconds(now - recent_[1].first) >= 5.0) recent_.pop_front();
+  const std::string text = line(stage, step, steps, stepsThisRun, world);  // on every rank: its measures are reduced
+  if (!speaks_) return;
   if (terminal_) {
-    std::fprintf(stderr, "\r%-100s", line(stage, step, steps, world).c_str());
+    std::fprintf(stderr, "\r%-100s", text.c_str());
   } else {
-    std::printf("progress: %s\n", line(stage, step, steps, world).c_str());
+    std::printf("progress: %s\n", text.c_str());
     std::fflush(stdout);
   }
 }
 
-std::string ProgressPrinter::line(const StageSpec& stage, long step, long steps, const World& world) const {
+std::string ProgressPrinter::line(const StageSpec& stage, long step, long steps, long stepsThisRun, const World& world) const {
   const auto& [then, stepsThen] = recent_.front();
   const double window = seconds(recent_.back().first - then);
-  const double rate = window > 0.0 ? (steps_ - stepsThen) / window : steps_ / std::max(seconds(Clock::now() - start_), 1e-9);
+  const double rate = window > 0.0 ? (stepsThisRun - stepsThen) / window
+                                   : stepsThisRun / std::max(seconds(Clock::now() - start_), 1e-9);
   char text[256];
   if (stage.kineticEnergyRatio > 0.0 || stage.wallPressure > 0.0 || stage.porosity > 0.0) {
     // The end is where the watched quantity crosses its target: no percentage, no ETA.
@@ -60,7 +66,7 @@ std::string ProgressPrinter::line(const StageSpec& stage, long step, long steps,
 
 void ProgressPrinter::stageEnded(const StageSpec& stage, const std::string& reason, const World& world) {
   clearLine();
-  const PackingMeasures m = measurePacking(world);
+  const PackingMeasures m = measurePacking(world);  // on every rank: reduced
   std::printf("stage '%s': t = %.4g s, %s; solid fraction %.4f, mean coordination %.3f, E_kin %.3g J", stage.name.c_str(),
               world.time(), reason.c_str(), m.solidFraction, m.meanCoordination, world.kineticEnergy());
   if (stage.kineticEnergyRatio > 0.0) {

@@ -16,10 +16,12 @@ namespace sqdem::cli {
 
 class ProgressPrinter : public RunObserver {
  public:
-  /// recordEvery: seconds between progress records when stderr is not a terminal (0: none).
-  ProgressPrinter(const Scene& scene, double recordEvery);
+  /// recordEvery: seconds between progress records when stderr is not a terminal (0: none);
+  /// speaks: whether this process prints (across ranks rank 0, whose clock paces every rank).
+  ProgressPrinter(const Scene& scene, double recordEvery, bool speaks);
 
-  void stepped(const StageSpec& stage, long step, long steps, const World& world) override;
+  bool wantsUpdate() override;
+  void update(const StageSpec& stage, long step, long steps, long stepsThisRun, const World& world) override;
   void stageEnded(const StageSpec& stage, const std::string& reason, const World& world) override;
   /// Clears the terminal's progress line (before other output).
   void clearLine() const;
@@ -28,12 +30,11 @@ class ProgressPrinter : public RunObserver {
 
  private:
   using Clock = std::chrono::steady_clock;
-  std::string line(const StageSpec& stage, long step, long steps, const World& world) const;
+  std::string line(const StageSpec& stage, long step, long steps, long stepsThisRun, const World& world) const;
 
   const Scene& scene_;
-  bool terminal_;
+  bool speaks_, terminal_;
   double recordEvery_;
-  long steps_ = 0;
   Clock::time_point start_ = Clock::now(), lastPrint_ = start_;
   std::deque<std::pair<Clock::time_point, long>> recent_;  ///< (when, steps) samples over the last 5 s
 };

@@ -5,17 +5,24 @@
 // prints progress (progress_printer.hpp), a line per stage, a summary. SIGINT/SIGTERM ask the
 // runner to stop after the current step with a checkpoint (exit 130); numerical trouble exits 3;
 // bad input 1; bad usage 2. A resumed run writes `<name>_from_step<N>_*`.
+// Under mpirun (or srun) the launched processes are the ranks of one run (docs/running.md):
+// every rank loads the scene and takes its sub-domain, rank 0 prints and writes the run's files
+// (stage_runner.hpp); an error found alike on every rank (the scene, the checkpoint, the output
+// directory) exits 1 everywhere, one a rank meets alone while running ends every rank.
 
 #include <omp.h>
 
 #include <algorithm>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <optional>
 
 #include "commands.hpp"
 #include "progress_printer.hpp"
+#include "sqdem/distributed/mpi_communicator.hpp"
 #include "sqdem/scene/build_world.hpp"
 #include "sqdem/io/plain_name.hpp"
 #include "sqdem/io/run_plot.hpp"
@@ -32,24 +39,34 @@ namespace fs = std::filesystem;
 volatile std::sig_atomic_t stopSignal = 0;
 extern "C" void requestStop(int signal) { stopSignal = signal; }
 
+/// Collective: its measures are reduced over the ranks; rank 0 prints (the others' stdout goes nowhere).
 void printSummary(const World& world, const RunReport& report, double wall, const RunOutput& output) {
-  const ContactStatistics& st = world.statistics();
+  const Communicator& ranks = world.communicator();
+  const ContactStatistics st = world.totalStatistics();
   const PackingMeasures m = measurePacking(world);
-  std::printf("summary: %ld steps in %.2f s (%.3g particle-steps/s), %zu contacts, %d neighbour-list builds\n",
-              report.stepsThisRun, wall, report.stepsThisRun * static_cast<double>(world.particles().size()) / wall,
-              world.contacts().size(), world.neighbourList().builds());
+  const auto total = [&](std::size_t count) { return ranks.sum(static_cast<long long>(count)); };
+  const long long particles = total(world.particles().size()), contacts = total(world.contacts().size());
+  std::printf("summary: %ld steps in %.2f s (%.3g particle-steps/s), %lld contacts, %d neighbour-list builds\n",
+              report.stepsThisRun, wall, report.stepsThisRun * static_cast<double>(particles) / wall, contacts,
+              world.neighbourList().builds());
   const StepTiming& t = world.timing();
   const auto share = [&](double part) { return wall > 0.0 ? 100.0 * part / wall : 0.0; };
-  std::printf("time: contacts (detection and laws) %.1f %%, integration %.1f %%, broad phase %.1f %%, reduction %.1f %%, "
-              "ghosts %.1f %%, other (stages, output, checks) %.1f %%\n",
-              share(t.contacts), share(t.integration), share(t.broadPhase), share(t.reduction), share(t.ghosts),
+  std::printf("time%s: contacts (detection and laws) %.1f %%, integration %.1f %%, broad phase %.1f %%, reduction %.1f %%, "
+              "%s %.1f %%, other (stages, output, checks) %.1f %%\n",
+              ranks.size() > 1 ? " (rank 0)" : "", share(t.contacts), share(t.integration), share(t.broadPhase),
+              share(t.reduction), ranks.size() > 1 ? "ghosts and communication" : "ghosts", share(t.ghosts),
               share(wall - t.contacts - t.integration - t.broadPhase - t.reduction - t.ghosts));
+  if (ranks.size() > 1) {
+    std::printf("ranks: %d; load imbalance (largest / mean cost, particles + candidate contacts) %.3f at the last build, "
+                "%d re-balances\n", ranks.size(), world.imbalance(), world.rebalances());
+  }
   std::size_t particleBytes = 0;
   ParticleStore::forEachArray(world.particles(), [&](const auto& array) { particleBytes += array.capacity() * sizeof(array[0]); });
-  const std::size_t candidates = world.interactions().store().size();
-  std::printf("memory: %.0f B per candidate contact (%zu candidates), %.0f B per particle\n",
-              candidates ? static_cast<double>(world.interactions().bytes()) / candidates : 0.0, candidates,
-              static_cast<double>(particleBytes) / std::max<std::size_t>(world.particles().size(), 1));
+  const long long candidates = total(world.interactions().store().size());
+  const long long contactBytes = total(world.interactions().bytes()), allParticleBytes = total(particleBytes);
+  std::printf("memory: %.0f B per candidate contact (%lld candidates), %.0f B per particle\n",
+              candidates ? static_cast<double>(contactBytes) / candidates : 0.0, candidates,
+              static_cast<double>(allParticleBytes) / std::max<long long>(particles, 1));
   std::printf("detector: %lld calls, %.2f iterations per call, %lld unresolved, %lld deep overlaps\n",
               st.detectorCalls, st.detectorCalls ? static_cast<double>(st.detectorIterations) / st.detectorCalls : 0.0,
               st.detectorFailures, st.deepOverlaps);
@@ -87,14 +104,39 @@ void printSummary(const World& world, const RunReport& report, double wall, cons
     std::printf("compression curve: %s%s\n", (output.directory / (output.name + "_compression.csv")).string().c_str(),
                 report.compressionPlot ? (", plot " + report.compressionPlot->string()).c_str() : " (no plot: gnuplot not found)");
   }
+  if (ranks.rank() != 0) return;
   const std::optional<fs::path> plot = plotRun(report.log);
   std::printf("run plot: %s\n", plot ? plot->string().c_str() : "none (gnuplot not found)");
 }
 
-int runScene(const std::string& scenePath, fs::path outDir, int threads, const std::string& resume, bool overwrite,
-             double progressEvery) {
+/// Under a launcher (mpirun, srun) the processes are the ranks of one run; started alone, a
+/// process runs by itself (MPI not initialised).
+std::shared_ptr<const Communicator> launchedRanks() {
+  for (const char* variable : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK"}) {
+    if (std::getenv(variable) != nullptr) return worldCommunicator();
+  }
+  return std::make_shared<SerialCommunicator>();
+}
+
+/// Throws SceneError on every rank when `prepare` threw on rank 0 (its message there): rank 0
+/// alone touches the output directory.
+void onRankZero(const Communicator& ranks, const std::function<void()>& prepare) {
+  std::string refused;
+  if (ranks.rank() == 0) {
+    try {
+      prepare();
+    } catch (const SceneError& e) {
+      refused = e.what();
+    }
+  }
+  if (ranks.any(!refused.empty())) throw SceneError(refused);
+}
+
+int runScene(const Communicator& ranks, std::shared_ptr<const Communicator> shared, const std::string& scenePath,
+             fs::path outDir, int threads, const std::string& resume, bool overwrite, double progressEvery) {
   const Scene scene = loadScene(scenePath);  // everything is validated before anything runs
   World world = buildWorld(scene);
+  world.setCommunicator(std::move(shared));
   const RunPlan plan = planRun(scene, world);
   const double dt = world.timeStep();
   RunProgress start;
@@ -111,13 +153,18 @@ int runScene(const std::string& scenePath, fs::path outDir, int threads, const s
   }
   RunOutput output{outDir.empty() ? fs::path("out") / stem : outDir,
                    resume.empty() ? stem : stem + "_from_step" + std::to_string(start.totalSteps)};
-  prepareOutputDirectory(output.directory, output.name, resume.empty(), overwrite);
-  for (const std::string& w : plan.warnings) std::fprintf(stderr, "sqdem run: warning: %s\n", w.c_str());
-  std::printf("sqdem run: %s: %zu particles, %zu walls, dt = %.4g s (%.3g x the Rayleigh time), %d thread(s), "
-              "output in %s\n", scenePath.c_str(), world.particles().size(), world.walls().size(), dt,
-              dt / plan.rayleighTime, omp_get_max_threads(), output.directory.string().c_str());
+  onRankZero(ranks, [&] { prepareOutputDirectory(output.directory, output.name, resume.empty(), overwrite); });
+  const long long particles = ranks.sum(static_cast<long long>(world.particles().size()));
+  if (ranks.rank() == 0) {
+    for (const std::string& w : plan.warnings) std::fprintf(stderr, "sqdem run: warning: %s\n", w.c_str());
+  }
+  std::printf("sqdem run: %s: %lld particles, %zu walls, dt = %.4g s (%.3g x the Rayleigh time), %d rank(s) x %d "
+              "thread(s), output in %s\n", scenePath.c_str(), particles, world.walls().size(), dt,
+              dt / plan.rayleighTime, ranks.size(), omp_get_max_threads(), output.directory.string().c_str());
   if (!resume.empty()) {
-    std::printf("resumed from %s at step %lld, stage '%s'\n", resume.c_str(), static_cast<long long>(start.totalSteps),
+    std::printf("resumed from %s at step %lld, %s '%s'\n", resume.c_str(), static_cast<long long>(start.totalSteps),
+                start.newStages ? "under this scene's stages (a new protocol, every contact history kept), from stage"
+                                : "stage",
                 scene.stages[start.stage].name.c_str());
   }
   std::fflush(stdout);  // seen at once when stdout is a pipe or a log file
@@ -125,12 +172,13 @@ int runScene(const std::string& scenePath, fs::path outDir, int threads, const s
   stopSignal = 0;
   std::signal(SIGINT, requestStop);
   std::signal(SIGTERM, requestStop);
-  ProgressPrinter printer(scene, progressEvery);
+  ProgressPrinter printer(scene, progressEvery, ranks.rank() == 0);
   const RunReport report = runStages(scene, world, plan, start, output, printer, stopSignal);
   printer.clearLine();
+  const bool speaks = ranks.rank() == 0;  // every rank has the same outcome
   switch (report.outcome) {
     case RunOutcome::NumericalTrouble:
-      std::fprintf(stderr, "sqdem run: numerical trouble at step %ld (t = %.6g s): %s.\n"
+      if (speaks) std::fprintf(stderr, "sqdem run: numerical trouble at step %ld (t = %.6g s): %s.\n"
                    "  Likely cause: the time step %.4g s is %.3g x the Rayleigh time of the smallest particle "
                    "(%.4g s); the automatic step is 0.2 x it (lower time_step or time_step_fraction).\n"
                    "  The log is in %s; checkpoints written so far are in %s\n",
@@ -138,7 +186,7 @@ int runScene(const std::string& scenePath, fs::path outDir, int threads, const s
                    plan.rayleighTime, report.log.string().c_str(), output.directory.string().c_str());
       return 3;
     case RunOutcome::Interrupted:
-      std::fprintf(stderr, "sqdem run: %s at step %ld (t = %.6g s); log %s, checkpoint %s\n"
+      if (speaks) std::fprintf(stderr, "sqdem run: %s at step %ld (t = %.6g s); log %s, checkpoint %s\n"
                    "  resume with: sqdem run %s --resume %s --out %s\n",
                    stopSignal == SIGINT ? "interrupted" : "terminated", report.totalSteps, world.time(),
                    report.log.string().c_str(), report.latestCheckpoint.string().c_str(), scenePath.c_str(),
@@ -210,13 +258,16 @@ int runCommand(const Arguments& args) {
     std::fprintf(stderr, "%s", usage);
     return 2;
   }
+  const std::shared_ptr<const Communicator> ranks = launchedRanks();
+  if (ranks->rank() != 0 && !std::freopen("/dev/null", "w", stdout)) return 1;  // rank 0 prints for the run
   try {
-    return runScene(scene, outDir, threads, resume, overwrite, progressEvery);
-  } catch (const SceneError& e) {
-    std::fprintf(stderr, "sqdem run: %s\n", e.what());
+    return runScene(*ranks, ranks, scene, outDir, threads, resume, overwrite, progressEvery);
+  } catch (const SceneError& e) {  // found alike on every rank, before the run
+    if (ranks->rank() == 0) std::fprintf(stderr, "sqdem run: %s\n", e.what());
     return 1;
-  } catch (const std::runtime_error& e) {  // output that cannot be written
+  } catch (const std::runtime_error& e) {  // output that cannot be written: maybe on this rank alone
     std::fprintf(stderr, "sqdem run: %s\n", e.what());
+    if (ranks->size() > 1) ranks->abort(1);
     return 1;
   }
 }

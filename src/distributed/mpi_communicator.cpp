@@ -3,6 +3,7 @@
 #include <mpi.h>
 
 #include <climits>
+#include <cstdlib>
 #include <numeric>
 #include <stdexcept>
 #include <vector>
@@ -62,6 +63,11 @@ class MpiCommunicator final : public Communicator {
   void sum(std::span<long long> values) const override { reduce(values.data(), values.size(), MPI_LONG_LONG, MPI_SUM); }
   void max(std::span<double> values) const override { reduce(values.data(), values.size(), MPI_DOUBLE, MPI_MAX); }
   void min(std::span<double> values) const override { reduce(values.data(), values.size(), MPI_DOUBLE, MPI_MIN); }
+
+  [[noreturn]] void abort(int code) const override {
+    MPI_Abort(MPI_COMM_WORLD, code);
+    std::exit(code);  // MPI_Abort does not return
+  }
 
   std::vector<std::string> exchangeAll(std::vector<std::string> outbox) const override {
     if (static_cast<int>(outbox.size()) != size_) throw std::logic_error("MPI: exchangeAll needs a message per rank");

@@ -82,4 +82,35 @@ void ContactStore::read(CheckpointReader& in) {
   });
 }
 
+void ContactStore::writeArrays(CheckpointWriter& out) const {
+  for (const bool flag : {withRolling, withCurvatureCache, withEnergy}) out.put(static_cast<std::uint8_t>(flag));
+  forEachArray(*this, [&](const auto& array) { out.putVector(array); });
+}
+
+ContactStore ContactStore::readArrays(CheckpointReader& in, const ContactStore& layout) {
+  std::uint8_t rolling = 0, cache = 0, energy = 0;
+  in.get(rolling);
+  in.get(cache);
+  in.get(energy);
+  requireIntact(rolling == layout.withRolling && cache == layout.withCurvatureCache && energy == layout.withEnergy,
+                "optional contact arrays");
+  ContactStore s;
+  s.withRolling = layout.withRolling;
+  s.withCurvatureCache = layout.withCurvatureCache;
+  s.withEnergy = layout.withEnergy;
+  const std::uint64_t anyLength = ~std::uint64_t{0};  // bounded by the bytes left
+  std::uint64_t count = 0;
+  bool first = true;
+  forEachArray(s, [&](auto& array) {
+    if (!s.keeps(&array)) {
+      in.getVector(array, 0);
+      return;
+    }
+    in.getVector(array, first ? anyLength : count);
+    if (first) count = array.size(), first = false;
+    requireIntact(array.size() == count, "contact array length");
+  });
+  return s;
+}
+
 }  // namespace sqdem

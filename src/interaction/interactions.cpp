@@ -39,18 +39,6 @@ ContactStore emptyStore(const InteractionScene& scene) {
   return s;
 }
 
-
-ContactStatistics& ContactStatistics::operator+=(const ContactStatistics& o) {
-  detectorCalls += o.detectorCalls;
-  detectorIterations += o.detectorIterations;
-  detectorFailures += o.detectorFailures;
-  for (int k = 0; k < contactStatusCount; ++k) failuresByStatus[k] += o.failuresByStatus[k];
-  deepOverlaps += o.deepOverlaps;
-  lostAdhesions += o.lostAdhesions;
-  lawFailures += o.lawFailures;
-  return *this;
-}
-
 void Interactions::setCandidates(const std::vector<CandidateKey>& candidates, const InteractionScene& scene,
                                  const std::vector<std::uint32_t>& ghostOwner) {
   if (candidates.size() > contactMask) throw std::length_error("Interactions: more than 2^29 candidate contacts");

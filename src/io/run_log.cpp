@@ -16,7 +16,12 @@ bool alongAnAxis(const Wall& w) {
 }  // namespace
 
 RunLog::RunLog(const std::filesystem::path& path, const World& world, std::optional<std::size_t> plate)
-    : path_(path), out_(path, std::ios::trunc), plate_(plate) {
+    : path_(path), plate_(plate) {
+  if (world.communicator().rank() != 0) {
+    out_.setstate(std::ios::badbit);  // the other ranks' rows go nowhere
+    return;
+  }
+  out_.open(path, std::ios::trunc);
   if (!out_) throw std::runtime_error("cannot write '" + path.string() + "'");
   out_.precision(12);
   out_ << "time_s,step,stage,kinetic_energy_J,contacts,mean_coordination,solid_fraction,between_walls_solid_fraction,"
@@ -40,9 +45,10 @@ RunLog::RunLog(const std::filesystem::path& path, const World& world, std::optio
 
 std::optional<PlateMeasures> RunLog::row(const World& world, long step, const std::string& stage) {
   const PackingMeasures m = measurePacking(world);
-  out_ << world.time() << ',' << step << ',' << stage << ',' << world.kineticEnergy() << ',' << world.contacts().size()
+  out_ << world.time() << ',' << step << ',' << stage << ',' << world.kineticEnergy() << ','
+       << world.communicator().sum(static_cast<long long>(world.contacts().size()))
        << ',' << m.meanCoordination << ',' << m.solidFraction << ',' << m.betweenWallsFraction << ',' << m.bedHeight << ','
-       << world.statistics().detectorFailures;
+       << world.totalStatistics().detectorFailures;
   for (const auto& [i, j] : {std::pair{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}}) out_ << ',' << m.stress(i, j);
   for (std::size_t k = 0; k < world.walls().size(); ++k) {
     const Wall& w = world.walls()[k];

@@ -157,21 +157,28 @@ VtkSeries::VtkSeries(std::filesystem::path directory, std::string name, VtkOutpu
 void VtkSeries::writeFrame(const World& world) {
   const std::vector<int> z = coordinationNumbers(world);
   const double t = world.time();
-  if (particles_.frames.empty()) {
+  const Communicator& ranks = world.communicator();
+  if (particles_.frames.empty() && ranks.rank() == 0) {
     writeParaViewScript(directory_, name_, {options_.surfaceResolution > 0, options_.contacts, !world.walls().empty()});
   }
-  write(particles_, t, vtkXml(particleFrame(world, z)));
-  if (options_.surfaceResolution > 0) write(surfaces_, t, vtkXml(surfaceFrame(world, z, options_.surfaceResolution)));
-  if (options_.contacts) write(contacts_, t, vtkXml(contactFrame(world)));
-  if (!world.walls().empty()) write(walls_, t, vtkXml(wallFrame(world)));
+  write(particles_, t, particleFrame(world, z), ranks);
+  if (options_.surfaceResolution > 0) write(surfaces_, t, surfaceFrame(world, z, options_.surfaceResolution), ranks);
+  if (options_.contacts) write(contacts_, t, contactFrame(world), ranks);
+  if (!world.walls().empty() && ranks.rank() == 0) write(walls_, t, wallFrame(world), SerialCommunicator());  // global bodies
 }
 
-void VtkSeries::write(Series& series, double time, const std::string& content) const {
+void VtkSeries::write(Series& series, double time, const PolyData& frame, const Communicator& ranks) const {
   char number[32];
-  std::snprintf(number, sizeof number, "_%05zu.vtp", series.frames.size());
-  const std::string file = name_ + "_" + series.kind + number;
-  writeFileAtomically(directory_ / file, content);
+  std::snprintf(number, sizeof number, "_%05zu", series.frames.size());
+  const std::string stem = name_ + "_" + series.kind + number;
+  const std::string file = stem + (ranks.size() > 1 ? ".pvtp" : ".vtp");
   series.frames.emplace_back(time, file);
+  if (ranks.size() > 1) {
+    writeVtkPiece(frame, directory_ / file, ranks.rank(), ranks.size());
+  } else if (ranks.rank() == 0) {
+    writeFileAtomically(directory_ / file, vtkXml(frame));
+  }
+  if (ranks.rank() != 0) return;
   // The collection, by hand: VTK has no .pvd writer outside ParaView.
   std::ostringstream out;
   out.precision(12);

@@ -5,12 +5,14 @@
 #include <vtkDoubleArray.h>
 #include <vtkFloatArray.h>
 #include <vtkIntArray.h>
+#include <vtkMPIController.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkTypeInt32Array.h>
 #include <vtkTypeInt64Array.h>
+#include <vtkXMLPPolyDataWriter.h>
 #include <vtkXMLPolyDataWriter.h>
 
 #include <stdexcept>
@@ -57,10 +59,8 @@ vtkSmartPointer<vtkCellArray> cells(const PolyData& data) {
   return data.connectivity.size() < int32Limit ? cellsAs<vtkTypeInt32Array>(data) : cellsAs<vtkTypeInt64Array>(data);
 }
 
-}  // namespace
-
-std::string vtkXml(const PolyData& data) {
-  vtkNew<vtkPolyData> poly;
+vtkSmartPointer<vtkPolyData> toVtk(const PolyData& data) {
+  auto poly = vtkSmartPointer<vtkPolyData>::New();
   vtkNew<vtkPoints> points;
   points->SetData(toVtk(data.points));
   poly->SetPoints(points);
@@ -73,16 +73,52 @@ std::string vtkXml(const PolyData& data) {
   for (const DataArray& a : data.cellData) poly->GetCellData()->AddArray(toVtk(a));
   if (!data.pointScalars.empty()) poly->GetPointData()->SetActiveScalars(data.pointScalars.c_str());
   if (!data.cellScalars.empty()) poly->GetCellData()->SetActiveScalars(data.cellScalars.c_str());
+  return poly;
+}
+
+/// The output's encoding: appended raw binary after the XML header, zlib level 1, 64-bit headers.
+template <typename Writer>
+void encode(Writer& writer) {
+  writer.SetDataModeToAppended();
+  writer.EncodeAppendedDataOff();
+  writer.SetCompressorTypeToZLib();
+  writer.SetCompressionLevel(1);
+  writer.SetHeaderTypeToUInt64();
+}
+
+}  // namespace
+
+std::string vtkXml(const PolyData& data) {
   vtkNew<vtkXMLPolyDataWriter> writer;
-  writer->SetInputData(poly);
-  writer->SetDataModeToAppended();
-  writer->EncodeAppendedDataOff();  // raw binary after the XML header
-  writer->SetCompressorTypeToZLib();
-  writer->SetCompressionLevel(1);
-  writer->SetHeaderTypeToUInt64();
+  writer->SetInputData(toVtk(data));
+  encode(*writer);
   writer->WriteToOutputStringOn();
   if (writer->Write() != 1) throw std::runtime_error("VTK could not write a .vtp frame");
   return writer->GetOutputString();
+}
+
+void writeVtkPiece(const PolyData& data, const std::filesystem::path& summary, int piece, int pieces) {
+  vtkNew<vtkXMLPPolyDataWriter> writer;
+  writer->SetInputData(toVtk(data));
+  encode(*writer);
+  writer->SetFileName(summary.string().c_str());
+  writer->SetNumberOfPieces(pieces);
+  writer->SetStartPiece(piece);
+  writer->SetEndPiece(piece);
+  // Every rank takes part in the summary (a collective: the ranks tell each other which pieces
+  // were written, so that it lists them all); rank 0 writes it.
+  // MPI is initialised by the run (distributed/mpi_communicator.hpp): VTK's controller,
+  // initialised once, is told so.
+  writer->SetWriteSummaryFile(1);
+  static const bool initialised = [] {
+    vtkNew<vtkMPIController> first;
+    first->Initialize(nullptr, nullptr, 1);
+    return true;
+  }();
+  (void)initialised;
+  vtkNew<vtkMPIController> controller;
+  writer->SetController(controller);
+  if (writer->Write() != 1) throw std::runtime_error("VTK could not write piece " + std::to_string(piece) + " of " + summary.string());
 }
 
 }  // namespace sqdem

@@ -11,7 +11,7 @@
 namespace sqdem {
 
 bool ownsFile(const std::string& file, const std::string& name) {
-  static const std::regex rest(R"((_from_step[0-9]+)?(\.csv|_final_particles\.csv|_(particles|surfaces|contacts|walls)(_[0-9]+)?\.(vtu|vtp|pvd)|_view\.py)"
+  static const std::regex rest(R"((_from_step[0-9]+)?(\.csv|_final_particles\.csv|_(particles|surfaces|contacts|walls)(_[0-9]+){0,2}\.(vtu|vtp|pvtp|pvd)|_view\.py)"
                                R"(|_compression\.(csv|gp|png(\.tmp)?))"
                                R"(|_(after_[A-Za-z0-9_.-]+|latest)\.checkpoint)(\.tmp[0-9]+)?)");
   return file.rfind(name, 0) == 0 && std::regex_match(file.substr(name.size()), rest);

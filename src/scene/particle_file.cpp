@@ -1,5 +1,7 @@
 #include "sqdem/scene/particle_file.hpp"
 
+#include "sqdem/distributed/whole_state.hpp"
+
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -80,16 +82,15 @@ std::vector<ParticleSpec> readParticleFile(const std::filesystem::path& path, co
 }
 
 void writeParticleFile(const std::filesystem::path& path, const World& world, const std::vector<NamedMaterial>& materials) {
-  const ParticleStore& p = world.particles();
-  std::vector<std::size_t> byId(p.size());
-  for (std::size_t i = 0; i < p.size(); ++i) byId[p.id[i]] = i;
+  const ParticleStore p = gatherWhole(world.particles(), {}, {}, {}, world.communicator()).particles;  // in id order
+  if (world.communicator().rank() != 0) return;
   std::string out = header() + "\n";
   char number[32];
   const auto put = [&](double v) {
     std::snprintf(number, sizeof number, ",%.17g", v);
     out += number;
   };
-  for (const std::size_t i : byId) {
+  for (std::size_t i = 0; i < p.size(); ++i) {
     const Superquadric& s = world.shapes()[p.shape[i]];
     const Quat& q = p.orientation[i];
     out += materials[p.material[i]].name;

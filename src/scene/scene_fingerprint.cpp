@@ -1,6 +1,6 @@
 // sceneFingerprint (scene_fingerprint.hpp): every field of the validated scene but its path and output
-// settings (except the energy ledger, part of the world's state), fed in declaration order to a
-// CRC-64. A new Scene field must be added here.
+// settings (except the energy ledger, part of the world's state), part by part, fed in declaration
+// order to a CRC-64 each. A new Scene field must be added here.
 
 #include "sqdem/scene/scene_fingerprint.hpp"
 #include "sqdem/archive/checkpoint_file.hpp"
@@ -24,24 +24,40 @@ struct SceneHasher {
 
 }  // namespace
 
-std::uint64_t sceneFingerprint(const Scene& scene) {
+SceneFingerprint sceneFingerprint(const Scene& scene) {
+  SceneFingerprint out;
+  std::size_t part = 0;
   SceneHasher h;
+  const auto next = [&] {  // closes the part being hashed
+    out.parts[part++] = h.f.value();
+    h = SceneHasher();
+  };
   const Domain& d = scene.domain;
-  h.all(scene.seed, d.lo, d.hi, h.n(d.periodic[0]), h.n(d.periodic[1]), h.n(d.periodic[2]), scene.gravity,
-        scene.timeStep.value_or(0.0), scene.timeStepFraction, scene.impactVelocity, scene.stepsPerCollision, scene.skin,
-        h.n(scene.broadPhase), h.n(scene.reorderEvery));
+  h.all(scene.seed);
+  next();
+  h.all(d.lo, d.hi, h.n(d.periodic[0]), h.n(d.periodic[1]), h.n(d.periodic[2]));
+  next();
+  h.all(scene.gravity);
+  next();
+  h.all(scene.timeStep.value_or(0.0), scene.timeStepFraction, scene.impactVelocity, scene.stepsPerCollision);
+  next();
+  h.all(scene.skin, h.n(scene.broadPhase), h.n(scene.reorderEvery));
+  next();
   for (const NamedMaterial& m : scene.materials) {
     const Material& x = m.material;
     h.all(m.name, x.youngsModulus, x.poissonRatio, x.density, x.friction, x.restitution, x.yieldStrength);
   }
+  next();
   for (const ShapeFamily& s : scene.shapes) {
     h.all(s.name, s.volumeRadius[0], s.volumeRadius[1], s.aspectB[0], s.aspectB[1], s.aspectC[0], s.aspectC[1], s.n1, s.n2);
   }
+  next();
   for (const InteractionSpec& i : scene.interactions) {
     h.all(h.n(i.materialA), h.n(i.materialB), i.normalName, h.n(i.curvatures), h.n(i.ellipticTangential), h.n(i.eccentricity), i.capFactor,
           i.curvatureTolerance, i.restitution, i.friction, i.stiffnessScale, i.rollingHysteresis);
     for (const auto& [key, value] : i.lawParameters) h.all(key, value);
   }
+  next();
   for (const WallSpec& w : scene.walls) {
     h.all(h.n(static_cast<std::uint32_t>(w.shape)), w.point, w.normal, w.axis, w.radius, w.length, h.n(w.flatEnds), w.angularVelocity, w.velocity,
           h.n(w.material));
@@ -49,6 +65,7 @@ std::uint64_t sceneFingerprint(const Scene& scene) {
     for (const Vec3& v : w.mesh->mesh().vertices) h(v);  // the mesh as read, repaired and scaled
     for (const auto& t : w.mesh->mesh().triangles) h.all(h.n(t[0]), h.n(t[1]), h.n(t[2]));
   }
+  next();
   for (const ParticleSpec& p : scene.particles) {
     const Quat& q = p.orientation;
     h.all(p.origin, h.n(p.shape.value_or(~std::uint32_t{0})), p.semiAxes, p.n1, p.n2, h.n(p.material), p.centre, q.w(), q.x(),
@@ -57,14 +74,31 @@ std::uint64_t sceneFingerprint(const Scene& scene) {
   for (const InsertionSpec& in : scene.insertions) {
     h.all(h.n(in.count), in.solidFraction, h.n(in.shape), h.n(in.material), in.lo, in.hi, h.n(in.randomOrientation));
   }
+  next();
+  h.all(h.n(scene.output.energy));
+  next();
   for (const StageSpec& st : scene.stages) {
     h.all(st.name, st.duration, st.kineticEnergyRatio, st.wallPressure, st.porosity, h.n(st.pressureWall), st.minimumDuration, st.velocityScale,
           st.viscousDamping, h.n(st.wall.value_or(~std::size_t{0})), st.wallVelocity,
           h.n(st.servoWall.value_or(~std::size_t{0})), st.servo.pressure, st.servo.maxSpeed);
     for (const auto& [t, x] : st.wallPath.points) h.all(t, x);
   }
-  h.all(h.n(scene.output.energy));
-  return h.f.value();
+  out.stages = h.f.value();
+  return out;
+}
+
+std::uint64_t SceneFingerprint::state() const {
+  Fingerprint f;
+  for (const std::uint64_t p : parts) f(p);
+  return f.value();
+}
+
+std::string SceneFingerprint::differences(const SceneFingerprint& other) const {
+  std::string keys;
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    if (parts[k] != other.parts[k]) keys += (keys.empty() ? "'" : ", '") + std::string(partKeys[k]) + "'";
+  }
+  return keys;
 }
 
 }  // namespace sqdem

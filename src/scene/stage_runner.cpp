@@ -1,5 +1,6 @@
 #include "sqdem/scene/stage_runner.hpp"
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -159,20 +160,28 @@ RunReport runStages(const Scene& scene, World& world, const RunPlan& plan, const
         }
       }
       const RunProgress here{stageIndex, s, stageStart, totalSteps};
-      if (stop) {
+      // What each process's own state asks for, agreed over the ranks: stop, a checkpoint by the
+      // clock, an update of the observer.
+      const auto now = Clock::now();
+      std::array<double, 3> asked{
+          stop ? 1.0 : 0.0,
+          scene.output.checkpointMinutes > 0.0 &&
+                  std::chrono::duration<double>(now - lastCheckpoint).count() > 60.0 * scene.output.checkpointMinutes
+              ? 1.0 : 0.0,
+          observer.wantsUpdate() ? 1.0 : 0.0};
+      world.communicator().max(asked);
+      if (asked[0] > 0.0) {
         logRow(totalSteps, stage.name);
         writeRunCheckpoint(report.latestCheckpoint, scene, here, world);
         report.outcome = RunOutcome::Interrupted;
         return report;
       }
-      const auto now = Clock::now();
       if ((scene.output.checkpointSteps && totalSteps % static_cast<long>(scene.output.checkpointSteps) == 0) ||
-          (scene.output.checkpointMinutes > 0.0 &&
-           std::chrono::duration<double>(now - lastCheckpoint).count() > 60.0 * scene.output.checkpointMinutes)) {
+          asked[1] > 0.0) {
         writeRunCheckpoint(report.latestCheckpoint, scene, here, world);
         lastCheckpoint = now;
       }
-      observer.stepped(stage, s, steps, world);
+      if (asked[2] > 0.0) observer.update(stage, s, steps, report.stepsThisRun, world);
     }
     logRow(totalSteps, stage.name);
     observer.stageEnded(stage, reason, world);
@@ -183,7 +192,7 @@ RunReport runStages(const Scene& scene, World& world, const RunPlan& plan, const
   writeParticleFile(report.finalParticles, world, scene.materials);
   if (compression) {
     report.compression = compression->summary();
-    report.compressionPlot = compression->write(output.directory, output.name);
+    if (world.communicator().rank() == 0) report.compressionPlot = compression->write(output.directory, output.name);
   }
   return report;
 }

@@ -25,6 +25,9 @@ std::vector<int> coordinationNumbers(const World& world) {
     ++z[c.b()];
   }
   world.ghosts().fold(world.particles(), z);
+  // The contacts other ranks computed whose B is owned here, acting as their loads said.
+  const std::vector<RemoteContact>& remote = world.interactions().remoteContacts();
+  for (std::size_t m = 0; m < world.remoteLoads().size(); ++m) z[remote[m].slot] += world.remoteLoads()[m].acting;
   return z;
 }
 

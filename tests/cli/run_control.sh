@@ -1,5 +1,5 @@
 # `sqdem run` control on tests/scenes/small_bed.yaml: checkpoints resume bit for bit (mid-stage
-# and after SIGINT) with the step column continuing; an occupied --out is refused and left
+# and after SIGINT, and under a scene with other stages) with the step column continuing; an occupied --out is refused and left
 # untouched; --overwrite replaces sqdem's files; stale temporaries are removed; foreign,
 # truncated and corrupted checkpoints get one clear message and exit 1.
 . "$(dirname "$0")/lib.sh"
@@ -79,10 +79,25 @@ step=$(tail -1 "$b/small_bed.csv" | cut -d, -f2)
 check "interrupted resume" "$sqdem" run "$scene" --resume "$b/small_bed_latest.checkpoint" --out "$b" > /dev/null
 check "interrupted run resumed to the same final row" test "$(tail -1 "$b/small_bed_from_step$step.csv")" = "$final"
 
+# A new protocol on a checkpointed state (a scene that changes only its stages): the settled bed
+# of 'pour' pressed by a scene whose one stage is the first scene's 'press' ends, bit for bit, as
+# the first scene did: every contact history kept (a particle file would drop them).
+sed '/^  - name: pour/,/^    duration: 0.06/d' "$scene" > "$scratch/press_only.yaml"
+check "the press-only scene has one stage" test "$(grep -c -- '- name:' "$scratch/press_only.yaml")" -eq 1
+expect_output "a scene with other stages resumes a checkpoint" "under this scene's stages .* from stage 'press'" \
+  "$sqdem" run "$scratch/press_only.yaml" --resume "$a/small_bed_after_pour.checkpoint" --out "$scratch/protocol"
+step=$(awk -F, 'END { print $2 }' "$a/small_bed.csv")
+check "... to the first scene's final state" cmp -s "$a/small_bed_final_particles.csv" \
+  "$(ls "$scratch"/protocol/press_only_from_step*_final_particles.csv)"
+check "... its step column continuing" test "$(awk -F, 'END { print $2 }' "$scratch"/protocol/press_only_from_step*[0-9].csv)" -eq "$step"
+
 # Bad checkpoints.
 sed 's/youngs_modulus: 1.0e7/youngs_modulus: 2.0e7/' "$scene" > "$scratch/stiffer.yaml"
-expect_error "foreign checkpoint" 1 "written for another scene" \
+expect_error "foreign checkpoint: what differs named" 1 "written for another scene \('materials' differ\): a checkpoint resumes under a scene that changes only its 'stages' and 'output'" \
   "$sqdem" run "$scratch/stiffer.yaml" --resume "$a/small_bed_after_pour.checkpoint" --out "$scratch/c"
+sed -e 's/youngs_modulus: 1.0e7/youngs_modulus: 2.0e7/' -e 's/seed: \([0-9]*\)/seed: 9\1/' "$scene" > "$scratch/reseeded.yaml"
+expect_error "foreign checkpoint: every difference named" 1 "\('seed', 'materials' differ\)" \
+  "$sqdem" run "$scratch/reseeded.yaml" --resume "$a/small_bed_after_pour.checkpoint" --out "$scratch/c"
 head -c 5000 "$a/small_bed_after_pour.checkpoint" > "$scratch/truncated.checkpoint"
 expect_error "truncated checkpoint" 1 "truncated" "$sqdem" run "$scene" --resume "$scratch/truncated.checkpoint" --out "$scratch/c"
 cp "$a/small_bed_after_pour.checkpoint" "$scratch/flipped.checkpoint"

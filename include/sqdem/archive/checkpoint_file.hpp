@@ -8,9 +8,9 @@
 // The format version is the header's; the build fingerprint is the writer's (World::
 // stateFingerprint: the payload's version and the byte layout of every record written raw; a
 // checkpoint is a restart file for the same build, not an archive); the scene fingerprint is a
-// hash of the validated scene (scene/scene_fingerprint.hpp). A corrupted, truncated, foreign or
-// other-build file is refused with one message (CheckpointError) before any of its payload is
-// used.
+// hash of the validated scene (scene/scene_fingerprint.hpp), which the reader compares with its
+// own. A corrupted, truncated or other-build file is refused with one message (CheckpointError)
+// before any of its payload is used.
 
 #include <cstdint>
 #include <cstring>
@@ -115,8 +115,15 @@ struct CheckpointStamp {
 /// Writes header + payload atomically (a crash leaves the previous file or none).
 void writeCheckpointFile(const std::filesystem::path& path, const CheckpointStamp& stamp, std::string_view payload);
 
-/// Reads a checkpoint and returns its payload after checking every header field, the stamp and
-/// the CRC; throws CheckpointError("<path>: <what is wrong>").
-std::string readCheckpointFile(const std::filesystem::path& path, const CheckpointStamp& stamp);
+/// What a checkpoint file holds: the scene fingerprint it was written for (its reader's to
+/// compare) and its payload.
+struct CheckpointContents {
+  std::uint64_t scene = 0;
+  std::string payload;
+};
+
+/// Reads a checkpoint after checking every header field, the build fingerprint `build` and the
+/// CRC; throws CheckpointError("<path>: <what is wrong>").
+CheckpointContents readCheckpointFile(const std::filesystem::path& path, std::uint64_t build);
 
 }  // namespace sqdem

@@ -10,6 +10,7 @@
 // particles that migrate and their ghosts (byte strings, written and read as records).
 
 #include <cstdint>
+#include <cstdlib>
 #include <memory>
 #include <span>
 #include <string>
@@ -51,6 +52,19 @@ class Communicator {
   virtual std::vector<std::string> exchange(const std::vector<std::pair<int, std::string>>& outbox,
                                             std::span<const int> from) const = 0;
 
+  /// Ends every rank's process with exit code `code` (a failure one rank met alone, where the
+  /// others would wait for it in a collective).
+  [[noreturn]] virtual void abort(int code) const = 0;
+
+  /// Every rank's bytes on rank 0, in rank order; the others get none. Collective.
+  std::vector<std::string> gather(std::string bytes) const {
+    std::vector<std::string> outbox(size());
+    outbox[0] = std::move(bytes);
+    std::vector<std::string> inbox = exchangeAll(std::move(outbox));
+    if (rank() != 0) inbox.clear();
+    return inbox;
+  }
+
   /// Whether any rank's value is true.
   bool any(bool value) const {
     double v = value ? 1.0 : 0.0;
@@ -90,6 +104,7 @@ class SerialCommunicator final : public Communicator {
   void sum(std::span<long long>) const override {}
   void max(std::span<double>) const override {}
   void min(std::span<double>) const override {}
+  [[noreturn]] void abort(int code) const override { std::exit(code); }
   std::vector<std::string> exchangeAll(std::vector<std::string> outbox) const override { return outbox; }
   std::vector<std::string> exchange(const std::vector<std::pair<int, std::string>>& outbox,
                                     std::span<const int> from) const override {

@@ -52,8 +52,8 @@ class Ghosts {
   };
   const std::vector<Origin>& origins() const { return origin_; }
   /// Adds every ghost's entry of a per-slot array (slots() entries) to its owner's and drops the
-  /// ghosts' entries (counts per particle, say). Only ghosts of this rank's particles: a
-  /// decomposed run folds the others' through its owners (not yet needed).
+  /// ghosts' entries (counts per particle, say). Only ghosts of this rank's particles: the
+  /// others' entries stay with the contacts' loads sent to their owners (remote_loads.hpp).
   template <typename T>
   void fold(const ParticleStore& p, std::vector<T>& perSlot) const {
     const std::size_t owned = p.size();

@@ -163,6 +163,11 @@ struct ContactStore {
   void write(std::size_t k, CheckpointWriter& out) const;
   /// Appends a record written by write() of a store with the same optional arrays.
   void read(CheckpointReader& in);
+  /// Every kept array whole, after the optional arrays' flags (checkpoints).
+  void writeArrays(CheckpointWriter& out) const;
+  /// A store written by writeArrays, whose optional arrays must be `layout`'s; every array of
+  /// the same length (CheckpointError otherwise). Indices are the caller's to check.
+  static ContactStore readArrays(CheckpointReader& in, const ContactStore& layout);
   /// The store re-ordered: contact k of the result is contact order[k] of this one (order may
   /// name a subset: the others are dropped).
   void permute(const std::vector<std::uint32_t>& order);

@@ -43,7 +43,15 @@ struct ContactStatistics {
   long long lostAdhesions = 0;
   long long lawFailures = 0;       ///< contacts whose law had no valid form (NormalResponse::valid)
 
-  ContactStatistics& operator+=(const ContactStatistics& o);
+  /// Calls f(counter) for every counter, in a fixed order (sums, reductions over ranks).
+  template <typename Statistics, typename F>
+  static void forEachCount(Statistics& s, F&& f) {
+    for (auto* count : {&s.detectorCalls, &s.detectorIterations, &s.detectorFailures, &s.deepOverlaps, &s.lostAdhesions,
+                        &s.lawFailures}) {
+      f(*count);
+    }
+    for (auto& count : s.failuresByStatus) f(count);
+  }
 };
 
 /// The accuracy knobs of the common-normal detector (an engine-wide choice).
@@ -139,6 +147,8 @@ class Interactions {
   /// the last ones): each owned B sums them in key order with its own.
   void setRemoteContacts(const std::vector<RemoteContact>& contacts, std::size_t owned,
                          const std::vector<std::uint32_t>& ghostOwner);
+  /// setRemoteContacts' list, in its order.
+  const std::vector<RemoteContact>& remoteContacts() const { return remote_; }
   /// Contact k's load on its B (a particle), as B's sum adds it.
   LoadOnB loadOnB(std::uint32_t k, const ParticleStore& particles) const;
 
@@ -155,11 +165,12 @@ class Interactions {
   /// Bytes held (store, groups, key order, particle index).
   std::size_t bytes() const;
 
-  void writeState(CheckpointWriter& out) const;
-  /// A state written by writeState, every index checked against the scene (its particles and
-  /// ghosts those of the same checkpoint); throws CheckpointError when the checkpoint does not fit.
-  static Interactions readState(CheckpointReader& in, const InteractionScene& scene,
-                                const std::vector<std::uint32_t>& ghostOwner);
+  /// A store from a checkpoint, its slots those of this process (A owned, B owned or a ghost)
+  /// and its contacts' states as they were: the acting list (its acting flags in key order),
+  /// the groups and the particles' involvement made again. Throws CheckpointError
+  /// (checkpoint_file.hpp) when a slot does not fit the scene's particles and walls.
+  static Interactions restore(ContactStore store, const InteractionScene& scene,
+                              const std::vector<std::uint32_t>& ghostOwner);
 
  private:
   /// Contacts of one pair kind and one contact model.

@@ -29,7 +29,8 @@ namespace sqdem {
 class RunLog {
  public:
   /// Creates (truncates) the file and writes the header for the world's walls, the plate (wall
-  /// index) and the ledger; throws std::runtime_error if it cannot.
+  /// index) and the ledger; throws std::runtime_error if it cannot. Across ranks rank 0 writes
+  /// the file; every rank makes every row (its measures are reduced over the ranks).
   RunLog(const std::filesystem::path& path, const World& world, std::optional<std::size_t> plate);
   /// Writes a row; returns the plate's measures it logged (with a plate).
   std::optional<PlateMeasures> row(const World& world, long step, const std::string& stage);

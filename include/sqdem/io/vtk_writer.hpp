@@ -10,7 +10,11 @@
 //   <name>_walls.pvd      the walls' surfaces within the box (io/wall_surfaces.hpp).
 // With the first frame, <name>_view.py (paraview_script.hpp) opens them in ParaView.
 // Every file is written atomically; a .pvd is rewritten after each frame so it lists complete
-// frames only.
+// frames only. Across MPI ranks each frame is a piece per rank, `<name>_<kind>_NNNNN_<rank>.vtp`
+// (its owned particles, the contacts it computed), and a `<name>_<kind>_NNNNN.pvtp` that lists
+// them, written by VTK's parallel writer (vtk_xml.hpp); the walls, global bodies, as one .vtp by
+// rank 0, which also writes the .pvd and the script. (VTK writes the pieces in place, not
+// atomically: a frame is listed in the .pvd once rank 0's piece is written.)
 //
 // Particle point data: id, velocity (m/s), angular_velocity (rad/s), force (N), torque (N m),
 // quaternion [w x y z] (body -> world), semi_axes (m), exponents [n1 n2], volume_radius (m),
@@ -30,6 +34,7 @@
 #include <string>
 #include <vector>
 
+#include "sqdem/io/poly_data.hpp"
 #include "sqdem/world/world.hpp"
 
 namespace sqdem {
@@ -49,7 +54,9 @@ class VtkSeries {
     const char* kind;
     std::vector<std::pair<double, std::string>> frames;
   };
-  void write(Series& series, double time, const std::string& content) const;
+  /// A frame of `series`: in one process a .vtp; across ranks every rank's piece and rank 0's
+  /// .pvtp. Rank 0 lists it in the .pvd.
+  void write(Series& series, double time, const PolyData& frame, const Communicator& ranks) const;
 
   std::filesystem::path directory_;
   std::string name_;

@@ -1,8 +1,10 @@
 #pragma once
 // A PolyData (poly_data.hpp) as the text of a VTK XML .vtp file, written by VTK's
-// vtkXMLPolyDataWriter: appended raw binary data, zlib-compressed. Own target (sqdem_vtk_io):
+// vtkXMLPolyDataWriter: appended raw binary data, zlib-compressed; across ranks a piece per rank
+// and a .pvtp, by vtkXMLPPolyDataWriter. Own target (sqdem_vtk_io):
 // VTK's headers stay in vtk_xml.cpp.
 
+#include <filesystem>
 #include <string>
 
 #include "sqdem/io/poly_data.hpp"
@@ -10,5 +12,10 @@
 namespace sqdem {
 
 std::string vtkXml(const PolyData& data);
+
+/// Piece `piece` of `pieces` of a frame (a rank's share), written with the same encoding by VTK's
+/// parallel writer (vtkXMLPPolyDataWriter) as `<stem>_<piece>.vtp` beside `summary`, the .pvtp
+/// that lists the pieces, which the writer of piece 0 writes too. Throws std::runtime_error.
+void writeVtkPiece(const PolyData& data, const std::filesystem::path& summary, int piece, int pieces);
 
 }  // namespace sqdem

@@ -7,7 +7,8 @@
 namespace sqdem {
 
 /// The files a run named `name` writes, and those of runs resumed from it (`<name>_from_step<N>`):
-/// `<name>.csv`, `<name>_{particles,contacts}.pvd`, their `_NNNNN.{vtu,vtp}` frames,
+/// `<name>.csv`, `<name>_{particles,surfaces,contacts,walls}.pvd`, their `_NNNNN.{vtu,vtp,pvtp}` frames
+/// and `_NNNNN_<rank>.vtp` pieces,
 /// `<name>_after_<stage>.checkpoint`, `<name>_latest.checkpoint`, and their `.tmp<pid>` temporaries.
 bool ownsFile(const std::string& file, const std::string& name);
 

@@ -24,7 +24,8 @@ namespace sqdem {
 /// message") for a wrong header, row, number, material, semi-axis, exponent or quaternion.
 std::vector<ParticleSpec> readParticleFile(const std::filesystem::path& path, const std::vector<NamedMaterial>& materials);
 
-/// Writes the world's particles (in id order) to `path`, atomically.
+/// Writes the world's particles (in id order) to `path`, atomically; across ranks gathered on
+/// rank 0, which writes the file (collective).
 void writeParticleFile(const std::filesystem::path& path, const World& world, const std::vector<NamedMaterial>& materials);
 
 }  // namespace sqdem

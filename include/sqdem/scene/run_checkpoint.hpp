@@ -1,6 +1,8 @@
 #pragma once
 // A run's checkpoint: where the run stands (RunProgress) followed by the World's state, in a
-// self-checking checkpoint file (world/checkpoint_file.hpp) stamped with the scene's fingerprint.
+// self-checking checkpoint file (archive/checkpoint_file.hpp) stamped with the scene's fingerprint
+// (scene_fingerprint.hpp: its parts but the stages), the parts and the stages' own fingerprint
+// first in the payload.
 
 #include <cstdint>
 #include <filesystem>
@@ -16,13 +18,21 @@ struct RunProgress {
   std::int64_t stepInStage = 0;  ///< its steps already done
   double stageStart = 0.0;       ///< simulated time at which it began (s)
   std::int64_t totalSteps = 0;   ///< steps since the run began (the CSV's step column)
+  /// Read under a scene with other stages: the state continues under the new ones, from the
+  /// first (not written: a checkpoint's progress is its own scene's).
+  bool newStages = false;
 };
 
+/// Collective: the world's state gathered, rank 0 writes the file; read by every rank, which
+/// keeps its share (World::readState), at any rank count.
 void writeRunCheckpoint(const std::filesystem::path& path, const Scene& scene, const RunProgress& progress,
                         const World& world);
 
 /// Restores `world` (built from `scene`) and returns the progress; SceneError("<path>: ...") for
-/// a corrupted, truncated, foreign or finished checkpoint. The world is unchanged on error.
+/// a corrupted, truncated or finished checkpoint, or one written for a scene whose parts other
+/// than its `stages` and `output` differ (naming them). Under a scene with other stages the
+/// state (and every contact history) continues under those, from the first; the step count
+/// goes on. The world is unchanged on error.
 RunProgress readRunCheckpoint(const std::filesystem::path& path, const Scene& scene, World& world);
 
 }  // namespace sqdem

@@ -17,6 +17,12 @@
 // a scene with a pressing plate with `<name>_compression.csv/.gp/.png` (compression_report.hpp). Numerical trouble
 // (run_health.hpp) ends it with NumericalTrouble after the log row is written. A run resumed
 // mid-stage continues bit for bit.
+//
+// Across MPI ranks every rank calls runStages alike (the world's communicator): rank 0 writes the
+// log, the plots, the checkpoints and the particle file (gathered in id order), every rank its
+// piece of each VTK frame. The decisions that read a process's own state — a stop signal, the
+// checkpoint clock, the observer's — are agreed over the ranks at every step (one reduction), so
+// every rank takes the same step into the same branch.
 
 #include <csignal>
 #include <filesystem>
@@ -50,11 +56,16 @@ RunPlan planRun(const Scene& scene, const World& world);
 /// radius.
 double kineticEnergyRatio(const World& world, const Vec3& gravity, double velocityScale);
 
-/// What the runner tells its caller as it goes (printing is the caller's).
+/// What the runner tells its caller as it goes (printing is the caller's). Across ranks every
+/// rank's observer is called at the same steps (what it reads of the world is reduced there).
 class RunObserver {
  public:
   virtual ~RunObserver() = default;
-  virtual void stepped(const StageSpec& /*stage*/, long /*step*/, long /*steps*/, const World& /*world*/) {}
+  /// Whether this process wants an update after the current step (its own clock, say); the
+  /// runner calls update() on every rank when any rank wants one.
+  virtual bool wantsUpdate() { return false; }
+  virtual void update(const StageSpec& /*stage*/, long /*step*/, long /*steps*/, long /*stepsThisRun*/,
+                      const World& /*world*/) {}
   virtual void stageEnded(const StageSpec& /*stage*/, const std::string& /*reason*/, const World& /*world*/) {}
 };
 

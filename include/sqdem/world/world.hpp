@@ -134,22 +134,30 @@ class World {
   /// range), in key order.
   auto contacts() const { return interactions_.acting(); }
   const Interactions& interactions() const { return interactions_; }
+  /// The loads of the last force computation that other ranks' contacts put on this rank's
+  /// particles, one per Interactions::remoteContacts() entry (empty in one process).
+  const std::vector<LoadOnB>& remoteLoads() const { return remoteLoadsNow_; }
   const Domain& domain() const { return domain_; }
+  /// This process's counters of its contacts' computations.
   const ContactStatistics& statistics() const { return statistics_; }
+  /// The run's: every rank's counters summed. Collective.
+  ContactStatistics totalStatistics() const;
   const StepTiming& timing() const { return timing_; }
   const NeighbourList& neighbourList() const { return neighbours_; }
 
-  /// Checkpoint of the dynamic state (particles, walls, contact history, neighbour list,
-  /// time, statistics) in a binary form for the same build; the static parts (shapes,
-  /// materials, laws) come from the scene. Restoring into a world built from the same scene
-  /// continues bit for bit (world_state.cpp).
+  /// Checkpoint of the dynamic state (particles, walls, contact history, the positions of the
+  /// last neighbour-list build, time, statistics) in a binary form for the same build, as one
+  /// process holding every particle would keep it (distributed/whole_state.hpp): gathered from
+  /// the ranks, written into rank 0's `out` (the others' stay empty). The static parts (shapes,
+  /// materials, laws) come from the scene. Collective.
   void writeState(CheckpointWriter& out) const;
   /// The fingerprint of writeState's payload (its version and the byte layout of its raw
   /// records): a checkpoint's build stamp (checkpoint_file.hpp).
   static std::uint64_t stateFingerprint();
-  /// Restores a state written by writeState; throws CheckpointError (checkpoint_file.hpp) if it
-  /// does not match this world or any count or index is out of range. The world is unchanged
-  /// when it throws.
+  /// Restores a state written by writeState at any rank count into a world built from the same
+  /// scene, on every rank (each keeps its share) and continues bit for bit; throws
+  /// CheckpointError (checkpoint_file.hpp), on every rank alike, if it does not match this world
+  /// or any count or index is out of range. The world is unchanged when it throws. Collective.
   void readState(CheckpointReader& in);
 
   /// Normal pressure on wall w: |F . n| over the box cross-section normal to the wall's
