@@ -20,16 +20,17 @@ same_at_two_ranks() {  # NAME SCENE
   done
 }
 
-# The press: relax 20 us, press until 100 MPa (at most 0.4 ms), hold 10 us, release 0.1 ms.
+# The press, shortened: relax 20 us, press 0.3 ms (the plate 3 um into the bed; its 300 MPa stop
+# criterion is checked, not reached), hold 10 us, release 0.1 ms.
 mkdir -p "$scratch/press"
 cp "$examples/nmc_packed_bed.csv" "$scratch/press/"
 sed -e '/name: relax/,/viscous_damping/s/duration: 2.0e-4 /duration: 2.0e-5 /' \
-    -e '/name: press/,/stop:/s/duration: 2.0e-3/duration: 4.0e-4/' -e 's/wall_pressure: 300.0e6/wall_pressure: 100.0e6/' \
+    -e '/name: press/,/stop:/s/duration: 2.0e-3/duration: 3.0e-4/' \
     -e '/name: hold/,/duration/s/duration: 5.0e-5/duration: 1.0e-5/' \
     -e '/name: release/,/duration/s/duration: 3.5e-4/duration: 1.0e-4/' "$examples/nmc_calendering.yaml" > "$scratch/press/press.yaml"
-check "the press scene was shortened" grep -q "duration: 4.0e-4" "$scratch/press/press.yaml"
+check "the press scene was shortened" grep -q "duration: 3.0e-4" "$scratch/press/press.yaml"
 same_at_two_ranks "press" "$scratch/press/press.yaml" press_compression.csv
-check "press: the plate reached its pressure" grep -q "wall 1 pressure reached" "$scratch/press.two.log"
+check "press: the plate pressed the bed (peak > 1 MPa)" grep -Eq "peak plate pressure ([1-9]|[1-9][0-9]+)\.[0-9]* MPa" "$scratch/press.two.log"
 check "press: some contacts yielded" grep -Eq "[1-9][0-9.]* % of the contacts yielded" "$scratch/press.two.log"
 
 # The roller pass: pour at most 0.1 s, lower as in the example, roll a quarter of the period,
