@@ -2,13 +2,14 @@
 // command around the scene layer (scene/): parses the arguments, loads and builds the scene,
 // plans the run (stage lengths, time step), restores a checkpoint, prepares DIR (default
 // out/<scene name>; scene/output_directory.hpp), runs the stages (scene/stage_runner.hpp) and
-// prints progress (progress_printer.hpp), a line per stage, a summary. SIGINT/SIGTERM ask the
-// runner to stop after the current step with a checkpoint (exit 130); numerical trouble exits 3;
+// prints progress (progress_printer.hpp), a line per stage, a summary. SIGINT, SIGTERM and SIGUSR1
+// ask the runner to stop after the current step with a checkpoint (exit 130); numerical trouble exits 3;
 // bad input 1; bad usage 2. A resumed run writes `<name>_from_step<N>_*`.
 // Under mpirun (or srun) the launched processes are the ranks of one run (docs/running.md):
 // every rank loads the scene and takes its sub-domain, rank 0 prints and writes the run's files
-// (stage_runner.hpp); an error found alike on every rank (the scene, the checkpoint, the output
-// directory) exits 1 everywhere, one a rank meets alone while running ends every rank.
+// (stage_runner.hpp); an error in the set-up (the scene, its files, the checkpoint, the output
+// directory), on any rank, exits 1 everywhere with one message; one a rank meets alone while
+// running ends every rank (MPI_Abort).
 
 #include <omp.h>
 
@@ -118,23 +119,29 @@ std::shared_ptr<const Communicator> launchedRanks() {
   return std::make_shared<SerialCommunicator>();
 }
 
-/// Throws SceneError on every rank when `prepare` threw on rank 0 (its message there): rank 0
-/// alone touches the output directory.
-void onRankZero(const Communicator& ranks, const std::function<void()>& prepare) {
-  std::string refused;
-  if (ranks.rank() == 0) {
-    try {
-      prepare();
-    } catch (const SceneError& e) {
-      refused = e.what();
-    }
+/// Thrown on every rank when a part of the set-up failed on some (its message printed there).
+struct FailedOnSomeRank {};
+
+/// Runs a part of the set-up that may fail on some ranks only (each reads the scene and its
+/// files; rank 0 alone prepares the output directory): when any rank failed, the lowest such
+/// prints its message and every rank throws FailedOnSomeRank.
+void agreed(const Communicator& ranks, const std::function<void()>& part) {
+  std::string error;
+  try {
+    part();
+  } catch (const SceneError& e) {
+    error = e.what();
   }
-  if (ranks.any(!refused.empty())) throw SceneError(refused);
+  const double lowest = ranks.min(error.empty() ? static_cast<double>(ranks.size()) : static_cast<double>(ranks.rank()));
+  if (lowest == ranks.size()) return;
+  if (lowest == ranks.rank()) std::fprintf(stderr, "sqdem run: %s\n", error.c_str());
+  throw FailedOnSomeRank();
 }
 
 int runScene(const Communicator& ranks, std::shared_ptr<const Communicator> shared, const std::string& scenePath,
              fs::path outDir, int threads, const std::string& resume, bool overwrite, double progressEvery) {
-  const Scene scene = loadScene(scenePath);  // everything is validated before anything runs
+  Scene scene;
+  agreed(ranks, [&] { scene = loadScene(scenePath); });  // everything is validated before anything runs
   World world = buildWorld(scene);
   world.setCommunicator(std::move(shared));
   const RunPlan plan = planRun(scene, world);
@@ -153,7 +160,9 @@ int runScene(const Communicator& ranks, std::shared_ptr<const Communicator> shar
   }
   RunOutput output{outDir.empty() ? fs::path("out") / stem : outDir,
                    resume.empty() ? stem : stem + "_from_step" + std::to_string(start.totalSteps)};
-  onRankZero(ranks, [&] { prepareOutputDirectory(output.directory, output.name, resume.empty(), overwrite); });
+  agreed(ranks, [&] {
+    if (ranks.rank() == 0) prepareOutputDirectory(output.directory, output.name, resume.empty(), overwrite);
+  });
   const long long particles = ranks.sum(static_cast<long long>(world.particles().size()));
   if (ranks.rank() == 0) {
     for (const std::string& w : plan.warnings) std::fprintf(stderr, "sqdem run: warning: %s\n", w.c_str());
@@ -172,6 +181,7 @@ int runScene(const Communicator& ranks, std::shared_ptr<const Communicator> shar
   stopSignal = 0;
   std::signal(SIGINT, requestStop);
   std::signal(SIGTERM, requestStop);
+  std::signal(SIGUSR1, requestStop);  // mpirun passes it on and, unlike SIGTERM, does not kill the ranks a second later
   ProgressPrinter printer(scene, progressEvery, ranks.rank() == 0);
   const RunReport report = runStages(scene, world, plan, start, output, printer, stopSignal);
   printer.clearLine();
@@ -188,7 +198,8 @@ int runScene(const Communicator& ranks, std::shared_ptr<const Communicator> shar
     case RunOutcome::Interrupted:
       if (speaks) std::fprintf(stderr, "sqdem run: %s at step %ld (t = %.6g s); log %s, checkpoint %s\n"
                    "  resume with: sqdem run %s --resume %s --out %s\n",
-                   stopSignal == SIGINT ? "interrupted" : "terminated", report.totalSteps, world.time(),
+                   stopSignal == SIGINT ? "interrupted" : stopSignal == SIGUSR1 ? "stopped (SIGUSR1)" : "terminated",
+                   report.totalSteps, world.time(),
                    report.log.string().c_str(), report.latestCheckpoint.string().c_str(), scenePath.c_str(),
                    report.latestCheckpoint.string().c_str(), output.directory.string().c_str());
       return 130;
@@ -265,7 +276,9 @@ int runCommand(const Arguments& args) {
   } catch (const SceneError& e) {  // found alike on every rank, before the run
     if (ranks->rank() == 0) std::fprintf(stderr, "sqdem run: %s\n", e.what());
     return 1;
-  } catch (const std::runtime_error& e) {  // output that cannot be written: maybe on this rank alone
+  } catch (const FailedOnSomeRank&) {  // before the run; the message is printed
+    return 1;
+  } catch (const std::exception& e) {  // while running (output that cannot be written): maybe on this rank alone
     std::fprintf(stderr, "sqdem run: %s\n", e.what());
     if (ranks->size() > 1) ranks->abort(1);
     return 1;

@@ -2,7 +2,9 @@
 
 #include <mpi.h>
 
+#include <algorithm>
 #include <climits>
+#include <cstdint>
 #include <cstdlib>
 #include <numeric>
 #include <stdexcept>
@@ -91,6 +93,35 @@ class MpiCommunicator final : public Communicator {
     return inbox;
   }
 
+  std::vector<std::string> gather(std::string bytes) const override {
+    // Point to point, rank by rank, in pieces below MPI's int count: rank 0 holds one message at
+    // a time besides what it gathered.
+    std::vector<std::string> inbox;
+    if (rank_ != 0) {
+      const auto size = static_cast<std::uint64_t>(bytes.size());
+      check(MPI_Send(&size, 1, MPI_UINT64_T, 0, gatherTag, MPI_COMM_WORLD), "MPI_Send");
+      for (std::uint64_t at = 0; at < size; at += gatherPiece) {
+        check(MPI_Send(bytes.data() + at, static_cast<int>(std::min(gatherPiece, size - at)), MPI_BYTE, 0, gatherTag,
+                       MPI_COMM_WORLD),
+              "MPI_Send");
+      }
+      ++traffic_.messages, traffic_.bytes += static_cast<long long>(size);
+      return inbox;
+    }
+    inbox.push_back(std::move(bytes));
+    for (int r = 1; r < size_; ++r) {
+      std::uint64_t size = 0;
+      check(MPI_Recv(&size, 1, MPI_UINT64_T, r, gatherTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE), "MPI_Recv");
+      std::string& message = inbox.emplace_back(size, '\0');
+      for (std::uint64_t at = 0; at < size; at += gatherPiece) {
+        check(MPI_Recv(message.data() + at, static_cast<int>(std::min(gatherPiece, size - at)), MPI_BYTE, r, gatherTag,
+                       MPI_COMM_WORLD, MPI_STATUS_IGNORE),
+              "MPI_Recv");
+      }
+    }
+    return inbox;
+  }
+
   std::vector<std::string> exchange(const std::vector<std::pair<int, std::string>>& outbox,
                                     std::span<const int> from) const override {
     std::vector<MPI_Request> sends(outbox.size());
@@ -120,13 +151,16 @@ class MpiCommunicator final : public Communicator {
   /// Byte counts as MPI's int counts (a message, or a rank's messages together, below 2 GiB).
   static std::vector<int> counts(const std::vector<long long>& bytes) {
     if (std::accumulate(bytes.begin(), bytes.end(), 0LL) > INT_MAX) {
-      throw std::runtime_error("MPI: more than 2 GiB in one exchange (use more ranks)");
+      throw std::runtime_error("MPI: more than 2 GiB in one exchange of particles (use more ranks)");
     }
     return {bytes.begin(), bytes.end()};
   }
   /// The tag of exchange()'s messages: each rank sends a partner at most one per call, and calls
   /// are collective in order, so messages match by source alone.
   static constexpr int exchangeTag = 7;
+  /// gather()'s: rank 0 receives from each rank in turn, every piece in order.
+  static constexpr int gatherTag = 8;
+  static constexpr std::uint64_t gatherPiece = std::uint64_t{1} << 30;
   static void reduce(void* data, std::size_t count, MPI_Datatype type, MPI_Op op) {
     if (count == 0) return;
     check(MPI_Allreduce(MPI_IN_PLACE, data, static_cast<int>(count), type, op, MPI_COMM_WORLD), "MPI_Allreduce");

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <numeric>
 #include <stdexcept>
+#include <tuple>
 
 #include "particle_record.hpp"
 #include "sqdem/math/permutation.hpp"
@@ -27,7 +28,7 @@ WholeState gatherWhole(const ParticleStore& p, std::span<const Vec3> reference, 
     out.put(contacts.onWall(k) ? Vec3(Vec3::Zero()) : p.position[contacts.b[k]]);
   }
   WholeState whole{{}, {}, layout, {}};
-  for (const std::string& message : ranks.gather(out.bytes())) {
+  for (std::string& message : ranks.gather(out.bytes())) {
     CheckpointReader in(message);
     std::uint64_t n = 0;
     in.get(n);
@@ -40,6 +41,7 @@ WholeState gatherWhole(const ParticleStore& p, std::span<const Vec3> reference, 
       whole.contacts.read(in);
       in.get(whole.imageOfB.emplace_back());
     }
+    std::string().swap(message);  // read: rank 0 holds the whole state once
   }
   ParticleStore& all = whole.particles;
   std::vector<std::uint32_t> byId(all.size());
@@ -69,7 +71,7 @@ void keepOwned(WholeState& whole, const std::vector<SubDomain>& parts, int rank,
   if (!whole.reference.empty()) permute(whole.reference, mine);
 }
 
-ContactStore placeContacts(const WholeState& whole, const ParticleStore& p) {
+ContactStore placeContacts(WholeState& whole, const ParticleStore& p) {
   // Every slot of this process (owned and ghosts) by id.
   std::vector<std::pair<std::uint32_t, std::uint32_t>> copies(p.slots());
   for (std::uint32_t i = 0; i < p.slots(); ++i) copies[i] = {p.id[i], i};
@@ -78,26 +80,33 @@ ContactStore placeContacts(const WholeState& whole, const ParticleStore& p) {
     return std::equal_range(copies.begin(), copies.end(), std::pair{id, 0u},
                             [](const auto& x, const auto& y) { return x.first < y.first; });
   };
-  const ContactStore& all = whole.contacts;
+  ContactStore& placed = whole.contacts;
   std::vector<std::uint32_t> here;
-  for (std::uint32_t k = 0; k < all.size(); ++k) {
-    const auto [first, last] = copiesOf(all.idA[k]);
+  for (std::uint32_t k = 0; k < placed.size(); ++k) {
+    const auto [first, last] = copiesOf(placed.idA[k]);
     if (first != last && first->second < p.size()) here.push_back(k);  // A owned here
   }
-  ContactStore placed = all;
   placed.permute(here);
-  for (std::size_t m = 0; m < here.size(); ++m) {
+  permute(whole.imageOfB, here);
+  for (std::size_t m = 0; m < placed.size(); ++m) {
     placed.a[m] = copiesOf(placed.idA[m]).first->second;
     if (placed.onWall(m)) continue;
-    const Vec3& seen = whole.imageOfB[here[m]];
+    // The copy at the very position the contact saw: its owner's plus the same offset, the same
+    // rounded addition in any process.
     const auto [first, last] = copiesOf(placed.idB[m]);
-    if (first == last) throw CheckpointError("checkpoint is corrupt (a contact's B is beyond every ghost of its A's rank)");
-    const auto nearest = std::min_element(first, last, [&](const auto& x, const auto& y) {
-      return (p.position[x.second] - seen).squaredNorm() < (p.position[y.second] - seen).squaredNorm();
-    });
-    placed.b[m] = nearest->second;
+    const auto copy = std::find_if(first, last, [&](const auto& c) { return p.position[c.second] == whole.imageOfB[m]; });
+    requireIntact(copy != last, "a contact's B has no copy where the contact saw it");
+    placed.b[m] = copy->second;
   }
-  return placed;
+  // In the order a candidate build finds them (by A's slot, then B's, walls after particles),
+  // which keeps a particle's contacts near it in memory.
+  std::vector<std::uint32_t> bySlots(placed.size());
+  std::iota(bySlots.begin(), bySlots.end(), 0u);
+  std::sort(bySlots.begin(), bySlots.end(), [&](std::uint32_t x, std::uint32_t y) {
+    return std::tie(placed.a[x], placed.b[x], placed.feature[x]) < std::tie(placed.a[y], placed.b[y], placed.feature[y]);
+  });
+  placed.permute(bySlots);
+  return std::move(placed);
 }
 
 }  // namespace sqdem

@@ -78,12 +78,13 @@ SceneFingerprint sceneFingerprint(const Scene& scene) {
   h.all(h.n(scene.output.energy));
   next();
   for (const StageSpec& st : scene.stages) {
+    h = SceneHasher();
     h.all(st.name, st.duration, st.kineticEnergyRatio, st.wallPressure, st.porosity, h.n(st.pressureWall), st.minimumDuration, st.velocityScale,
           st.viscousDamping, h.n(st.wall.value_or(~std::size_t{0})), st.wallVelocity,
           h.n(st.servoWall.value_or(~std::size_t{0})), st.servo.pressure, st.servo.maxSpeed);
     for (const auto& [t, x] : st.wallPath.points) h.all(t, x);
+    out.stages.push_back(h.f.value());
   }
-  out.stages = h.f.value();
   return out;
 }
 

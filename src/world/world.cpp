@@ -42,7 +42,7 @@ void World::setCommunicator(std::shared_ptr<const Communicator> communicator) {
   communicator_ = std::move(communicator);
   ParticleStore& p = particles_;
   ghosts_.drop(p);
-  neighbours_.restore({}, {}, neighbours_.builds());  // built again at the next step
+  neighbours_.restore({}, neighbours_.builds());  // built again at the next step
   const int ranks = communicator_->size();
   if (ranks == 1) {
     parts_ = {wholeBox(domain_)};

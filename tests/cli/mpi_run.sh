@@ -1,7 +1,7 @@
 # `sqdem run` under mpirun (docs/running.md) on tests/scenes/decomposed_bed.yaml (120 particles of
 # four shapes poured on a floor, periodic in x and y): at 2 and 3 ranks, and 2 ranks x 2 threads,
 # the final particle file and the whole CSV log are, byte for byte, one process's; a checkpoint
-# written at one rank count resumes at another to the same final state; SIGTERM to mpirun stops
+# written at one rank count resumes at another to the same final state; SIGUSR1 to mpirun stops
 # every rank at the same step with one checkpoint; each frame is a .pvtp over the ranks' pieces;
 # an error met on rank 0 alone (the output directory) stops every rank with one message.
 . "$(dirname "$0")/lib.sh"
@@ -51,11 +51,11 @@ resume "2 ranks' checkpoint resumed at 3 ranks" 3 "$scratch/r2/bed_latest.checkp
 resume "2 ranks' checkpoint resumed in one process" 1 "$scratch/r2/bed_latest.checkpoint" "$scratch/r2to1"
 resume "one process's checkpoint resumed at 2 ranks" 2 "$scratch/one/bed_latest.checkpoint" "$scratch/one"
 
-# SIGTERM to mpirun (forwarded to every rank): one stop, at one step, with a checkpoint that
-# resumes to the uninterrupted run's final state.
+# SIGUSR1 to mpirun (passed on to every rank; SIGTERM would be followed by SIGKILL a second
+# later): one stop, at one step, with a checkpoint that resumes to the uninterrupted run's final
+# state.
 sed 's/duration: 0.04}/duration: 0.2}/' "$scene" > "$scratch/long.yaml"
 check "uninterrupted long run" "$sqdem" run "$scratch/long.yaml" --threads 1 --out "$scratch/long1" > /dev/null
-# (timeout passes the signal on to mpirun)
 timeout 300 mpirun --oversubscribe -np 2 "$sqdem" run "$scratch/long.yaml" --threads 1 --out "$scratch/long2" \
   > "$scratch/long2.log" 2> "$scratch/long2.err" &
 launcher=$!
@@ -63,14 +63,14 @@ for _ in $(seq 600); do  # until the log has rows past step 2000
   [ "$({ wc -l < "$scratch/long2/long.csv"; } 2> /dev/null || echo 0)" -ge 4 ] && break
   sleep 0.1
 done
-kill -TERM "$launcher"
+kill -USR1 "$(pgrep -P "$launcher" -x mpirun)"
 wait "$launcher"
-check "SIGTERM: the run stopped with an error code" test $? -ne 0
-check "SIGTERM: one message, how to resume" test "$(grep -c "terminated at step" "$scratch/long2.err")" -eq 1
-step=$(sed -n 's/.*terminated at step \([0-9]*\) .*/\1/p' "$scratch/long2.err")
-check "SIGTERM: resumed at 3 ranks" mpi 3 "$sqdem" run "$scratch/long.yaml" --threads 1 \
+check "SIGUSR1: the run stopped with an error code" test $? -ne 0
+check "SIGUSR1: one message, how to resume" test "$(grep -c "stopped (SIGUSR1) at step" "$scratch/long2.err")" -eq 1
+step=$(sed -n 's/.*stopped (SIGUSR1) at step \([0-9]*\) .*/\1/p' "$scratch/long2.err")
+check "SIGUSR1: resumed at 3 ranks" mpi 3 "$sqdem" run "$scratch/long.yaml" --threads 1 \
   --resume "$scratch/long2/long_latest.checkpoint" --out "$scratch/long2" > /dev/null
-check "SIGTERM: the same final particles" cmp -s "$scratch/long1/long_final_particles.csv" \
+check "SIGUSR1: the same final particles" cmp -s "$scratch/long1/long_final_particles.csv" \
   "$scratch/long2/long_from_step${step}_final_particles.csv"
 
 # An error rank 0 meets alone: an --out that is a file. One message, every rank exits.

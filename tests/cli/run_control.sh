@@ -91,6 +91,9 @@ check "... to the first scene's final state" cmp -s "$a/small_bed_final_particle
   "$(ls "$scratch"/protocol/press_only_from_step*_final_particles.csv)"
 check "... its step column continuing" test "$(awk -F, 'END { print $2 }' "$scratch"/protocol/press_only_from_step*[0-9].csv)" -eq "$step"
 
+expect_error "a mid-stage checkpoint under other stages" 1 "written in the middle of stage 1, which this scene changes" \
+  "$sqdem" run "$scratch/press_only.yaml" --resume "$a/small_bed_latest.checkpoint" --out "$scratch/c"
+
 # Bad checkpoints.
 sed 's/youngs_modulus: 1.0e7/youngs_modulus: 2.0e7/' "$scene" > "$scratch/stiffer.yaml"
 expect_error "foreign checkpoint: what differs named" 1 "written for another scene \('materials' differ\): a checkpoint resumes under a scene that changes only its 'stages' and 'output'" \

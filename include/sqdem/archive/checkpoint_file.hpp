@@ -8,8 +8,8 @@
 // The format version is the header's; the build fingerprint is the writer's (World::
 // stateFingerprint: the payload's version and the byte layout of every record written raw; a
 // checkpoint is a restart file for the same build, not an archive); the scene fingerprint is a
-// hash of the validated scene (scene/scene_fingerprint.hpp), which the reader compares with its
-// own. A corrupted, truncated or other-build file is refused with one message (CheckpointError)
+// hash of the validated scene's parts but its stages (scene/scene_fingerprint.hpp), which the
+// reader compares with its own. A corrupted, truncated or other-build file is refused with one message (CheckpointError)
 // before any of its payload is used.
 
 #include <cstdint>

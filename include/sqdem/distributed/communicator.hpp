@@ -56,14 +56,9 @@ class Communicator {
   /// others would wait for it in a collective).
   [[noreturn]] virtual void abort(int code) const = 0;
 
-  /// Every rank's bytes on rank 0, in rank order; the others get none. Collective.
-  std::vector<std::string> gather(std::string bytes) const {
-    std::vector<std::string> outbox(size());
-    outbox[0] = std::move(bytes);
-    std::vector<std::string> inbox = exchangeAll(std::move(outbox));
-    if (rank() != 0) inbox.clear();
-    return inbox;
-  }
+  /// Every rank's bytes on rank 0, in rank order (of any size: a checkpoint's whole state); the
+  /// others get none. Collective.
+  virtual std::vector<std::string> gather(std::string bytes) const = 0;
 
   /// Whether any rank's value is true.
   bool any(bool value) const {
@@ -105,6 +100,7 @@ class SerialCommunicator final : public Communicator {
   void max(std::span<double>) const override {}
   void min(std::span<double>) const override {}
   [[noreturn]] void abort(int code) const override { std::exit(code); }
+  std::vector<std::string> gather(std::string bytes) const override { return {std::move(bytes)}; }
   std::vector<std::string> exchangeAll(std::vector<std::string> outbox) const override { return outbox; }
   std::vector<std::string> exchange(const std::vector<std::pair<int, std::string>>& outbox,
                                     std::span<const int> from) const override {

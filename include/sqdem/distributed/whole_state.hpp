@@ -35,9 +35,10 @@ WholeState gatherWhole(const ParticleStore& p, std::span<const Vec3> reference, 
 /// positions wrapped into `box` before the first build), in id order, with their references.
 void keepOwned(WholeState& whole, const std::vector<SubDomain>& parts, int rank, const Domain& box);
 
-/// The contacts of `whole` whose A is owned in p (after keepOwned and with its ghosts made),
-/// their slots found: A's by id, B's the copy of idB (owned, or a ghost) nearest the image it
-/// saw. Throws CheckpointError when a B has no copy here.
-ContactStore placeContacts(const WholeState& whole, const ParticleStore& p);
+/// The contacts of `whole` (taken from it) whose A is owned in p (after keepOwned and with its
+/// ghosts made), their slots found: A's by id, B's the copy of idB (owned, or a ghost) at the
+/// position the contact saw, in the order a candidate build finds them (by the slots of A, then
+/// B). Throws CheckpointError when a B has no copy there.
+ContactStore placeContacts(WholeState& whole, const ParticleStore& p);
 
 }  // namespace sqdem

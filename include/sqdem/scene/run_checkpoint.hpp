@@ -30,9 +30,11 @@ void writeRunCheckpoint(const std::filesystem::path& path, const Scene& scene, c
 
 /// Restores `world` (built from `scene`) and returns the progress; SceneError("<path>: ...") for
 /// a corrupted, truncated or finished checkpoint, or one written for a scene whose parts other
-/// than its `stages` and `output` differ (naming them). Under a scene with other stages the
-/// state (and every contact history) continues under those, from the first; the step count
-/// goes on. The world is unchanged on error.
+/// than its `stages` and `output` differ (naming them). Under a scene whose stages up to the
+/// checkpoint's place are unchanged (stages appended or later ones changed) the run continues
+/// there; under other stages the state, every contact history kept, runs them from the first (a
+/// new protocol; the step count goes on), which a checkpoint written mid-stage refuses. Every
+/// rank reads the file (collective); the world is unchanged on error.
 RunProgress readRunCheckpoint(const std::filesystem::path& path, const Scene& scene, World& world);
 
 }  // namespace sqdem

@@ -4,15 +4,16 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "sqdem/scene/scene.hpp"
 
 namespace sqdem {
 
 /// Hashes of a validated scene's parts, each of the values of its keys (not the path, nor the
-/// `output` keys but the energy ledger, part of the world's state). A checkpoint resumes under a
-/// scene whose parts are all the same as its writer's; the stages may differ (a new protocol on
-/// the checkpointed state).
+/// `output` keys but the energy ledger, part of the world's state), and of each stage. A
+/// checkpoint resumes under a scene whose parts are all the same as its writer's; the stages may
+/// differ (a new protocol on the checkpointed state, run_checkpoint.hpp).
 struct SceneFingerprint {
   /// The parts, by the scene keys they cover.
   static constexpr std::array<const char*, 11> partKeys = {
@@ -20,7 +21,7 @@ struct SceneFingerprint {
       "skin, broad_phase, reorder_every", "materials", "shapes", "interactions", "walls", "particles, insert",
       "output.energy"};
   std::array<std::uint64_t, partKeys.size()> parts{};
-  std::uint64_t stages = 0;
+  std::vector<std::uint64_t> stages;  ///< one per stage
 
   /// One hash of every part (a checkpoint header's scene fingerprint).
   std::uint64_t state() const;

@@ -65,11 +65,12 @@ class NeighbourList {
   void rebuild(const ParticleStore& particles, const std::vector<double>& reach);
 
   const std::vector<CandidatePair>& pairs() const { return pairs_; }
-  /// The build state, for checkpoints: owned positions at the last build and the candidate list.
+  /// The build state, for checkpoints: owned positions at the last build (the candidate list
+  /// is used once, by the build that makes it, and not kept across a restore).
   const std::vector<Vec3>& referencePositions() const { return reference_; }
-  void restore(std::vector<Vec3> reference, std::vector<CandidatePair> pairs, int builds) {
+  void restore(std::vector<Vec3> reference, int builds) {
     reference_ = std::move(reference);
-    pairs_ = std::move(pairs);
+    pairs_.clear();
     builds_ = builds;
   }
   int builds() const { return builds_; }

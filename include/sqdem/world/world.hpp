@@ -138,7 +138,8 @@ class World {
   /// particles, one per Interactions::remoteContacts() entry (empty in one process).
   const std::vector<LoadOnB>& remoteLoads() const { return remoteLoadsNow_; }
   const Domain& domain() const { return domain_; }
-  /// This process's counters of its contacts' computations.
+  /// This process's counters of its contacts' computations (after a restore, rank 0 holds the
+  /// run's totals until then).
   const ContactStatistics& statistics() const { return statistics_; }
   /// The run's: every rank's counters summed. Collective.
   ContactStatistics totalStatistics() const;
