@@ -56,16 +56,20 @@ resume "one process's checkpoint resumed at 2 ranks" 2 "$scratch/one/bed_latest.
 # state.
 sed 's/duration: 0.04}/duration: 0.2}/' "$scene" > "$scratch/long.yaml"
 check "uninterrupted long run" "$sqdem" run "$scratch/long.yaml" --threads 1 --out "$scratch/long1" > /dev/null
-timeout 300 mpirun --oversubscribe -np 2 "$sqdem" run "$scratch/long.yaml" --threads 1 --out "$scratch/long2" \
+mpirun --oversubscribe -np 2 "$sqdem" run "$scratch/long.yaml" --threads 1 --out "$scratch/long2" \
   > "$scratch/long2.log" 2> "$scratch/long2.err" &
 launcher=$!
+(sleep 300 && kill -KILL "$launcher") > /dev/null 2>&1 &  # a watchdog (holding no pipe of ctest's)
+watchdog=$!
 for _ in $(seq 600); do  # until the log has rows past step 2000
   [ "$({ wc -l < "$scratch/long2/long.csv"; } 2> /dev/null || echo 0)" -ge 4 ] && break
   sleep 0.1
 done
-kill -USR1 "$(pgrep -P "$launcher" -x mpirun)"
+kill -USR1 "$launcher"
 wait "$launcher"
-check "SIGUSR1: the run stopped with an error code" test $? -ne 0
+status=$?
+kill "$watchdog" 2> /dev/null
+check "SIGUSR1: the run stopped with an error code" test "$status" -ne 0
 check "SIGUSR1: one message, how to resume" test "$(grep -c "stopped (SIGUSR1) at step" "$scratch/long2.err")" -eq 1
 step=$(sed -n 's/.*stopped (SIGUSR1) at step \([0-9]*\) .*/\1/p' "$scratch/long2.err")
 check "SIGUSR1: resumed at 3 ranks" mpi 3 "$sqdem" run "$scratch/long.yaml" --threads 1 \
