@@ -138,12 +138,14 @@ void agreed(const Communicator& ranks, const std::function<void()>& part) {
   throw FailedOnSomeRank();
 }
 
-int runScene(const Communicator& ranks, std::shared_ptr<const Communicator> shared, const std::string& scenePath,
-             fs::path outDir, int threads, const std::string& resume, bool overwrite, double progressEvery) {
+int runScene(const std::shared_ptr<const Communicator>& communicator, const std::string& scenePath, fs::path outDir,
+             int threads, const std::string& resume, bool overwrite, double progressEvery) {
+  const Communicator& ranks = *communicator;
+  const bool speaks = ranks.rank() == 0;  // rank 0 prints and writes the run's files
   Scene scene;
   agreed(ranks, [&] { scene = loadScene(scenePath); });  // everything is validated before anything runs
   World world = buildWorld(scene);
-  world.setCommunicator(std::move(shared));
+  world.setCommunicator(communicator);
   const RunPlan plan = planRun(scene, world);
   const double dt = world.timeStep();
   RunProgress start;
@@ -161,10 +163,10 @@ int runScene(const Communicator& ranks, std::shared_ptr<const Communicator> shar
   RunOutput output{outDir.empty() ? fs::path("out") / stem : outDir,
                    resume.empty() ? stem : stem + "_from_step" + std::to_string(start.totalSteps)};
   agreed(ranks, [&] {
-    if (ranks.rank() == 0) prepareOutputDirectory(output.directory, output.name, resume.empty(), overwrite);
+    if (speaks) prepareOutputDirectory(output.directory, output.name, resume.empty(), overwrite);
   });
   const long long particles = ranks.sum(static_cast<long long>(world.particles().size()));
-  if (ranks.rank() == 0) {
+  if (speaks) {
     for (const std::string& w : plan.warnings) std::fprintf(stderr, "sqdem run: warning: %s\n", w.c_str());
   }
   std::printf("sqdem run: %s: %lld particles, %zu walls, dt = %.4g s (%.3g x the Rayleigh time), %d rank(s) x %d "
@@ -182,11 +184,10 @@ int runScene(const Communicator& ranks, std::shared_ptr<const Communicator> shar
   std::signal(SIGINT, requestStop);
   std::signal(SIGTERM, requestStop);
   std::signal(SIGUSR1, requestStop);  // mpirun passes it on and, unlike SIGTERM, does not kill the ranks a second later
-  ProgressPrinter printer(scene, progressEvery, ranks.rank() == 0);
+  ProgressPrinter printer(scene, progressEvery, speaks);
   const RunReport report = runStages(scene, world, plan, start, output, printer, stopSignal);
   printer.clearLine();
-  const bool speaks = ranks.rank() == 0;  // every rank has the same outcome
-  switch (report.outcome) {
+  switch (report.outcome) {  // every rank has the same; rank 0 tells it
     case RunOutcome::NumericalTrouble:
       if (speaks) std::fprintf(stderr, "sqdem run: numerical trouble at step %ld (t = %.6g s): %s.\n"
                    "  Likely cause: the time step %.4g s is %.3g x the Rayleigh time of the smallest particle "
@@ -272,7 +273,7 @@ int runCommand(const Arguments& args) {
   const std::shared_ptr<const Communicator> ranks = launchedRanks();
   if (ranks->rank() != 0 && !std::freopen("/dev/null", "w", stdout)) return 1;  // rank 0 prints for the run
   try {
-    return runScene(*ranks, ranks, scene, outDir, threads, resume, overwrite, progressEvery);
+    return runScene(ranks, scene, outDir, threads, resume, overwrite, progressEvery);
   } catch (const SceneError& e) {  // found alike on every rank, before the run
     if (ranks->rank() == 0) std::fprintf(stderr, "sqdem run: %s\n", e.what());
     return 1;

@@ -60,14 +60,19 @@ WholeState gatherWhole(const ParticleStore& p, std::span<const Vec3> reference, 
   return whole;
 }
 
-void keepOwned(WholeState& whole, const std::vector<SubDomain>& parts, int rank, const Domain& box) {
-  ParticleStore& all = whole.particles;
+std::vector<Vec3> buildPositions(const WholeState& whole, const Domain& box) {
+  if (!whole.reference.empty()) return whole.reference;
+  std::vector<Vec3> at;
+  for (const Vec3& x : whole.particles.position) at.push_back(box.wrap(x));
+  return at;
+}
+
+void keepOwned(WholeState& whole, const std::vector<SubDomain>& parts, int rank, std::span<const Vec3> at) {
   std::vector<std::uint32_t> mine;
-  for (std::uint32_t i = 0; i < all.size(); ++i) {
-    const Vec3 at = whole.reference.empty() ? box.wrap(all.position[i]) : whole.reference[i];
-    if (ownerOf(parts, at) == rank) mine.push_back(i);
+  for (std::uint32_t i = 0; i < at.size(); ++i) {
+    if (ownerOf(parts, at[i]) == rank) mine.push_back(i);
   }
-  ParticleStore::forEachArray(all, [&](auto& array) { permute(array, mine); });
+  ParticleStore::forEachArray(whole.particles, [&](auto& array) { permute(array, mine); });
   if (!whole.reference.empty()) permute(whole.reference, mine);
 }
 

@@ -155,15 +155,13 @@ void World::readState(CheckpointReader& in) {
   // This rank's share: the sub-domains cut afresh by counts (the result does not depend on
   // them), the particles of its own, their ghosts as the last build made them (from its
   // positions), the contacts of its A with their B's copies found again.
-  const auto at = [&](std::size_t i) { return whole.reference.empty() ? domain_.wrap(all.position[i]) : whole.reference[i]; };
-  for (std::size_t i = 0; i < n; ++i) requireIntact(wholeBox(domain_).owns(at(i)), "positions at the last build");
+  const std::vector<Vec3> at = buildPositions(whole, domain_);
+  for (const Vec3& x : at) requireIntact(wholeBox(domain_).owns(x), "positions at the last build");
   std::vector<SubDomain> parts{wholeBox(domain_)};
   if (communicator_->size() > 1) {
-    std::vector<Vec3> points(n);
-    for (std::size_t i = 0; i < n; ++i) points[i] = at(i);
-    parts = bisect(domain_, points, std::vector<double>(n, 1.0), communicator_->size(), SerialCommunicator());
+    parts = bisect(domain_, at, std::vector<double>(n, 1.0), communicator_->size(), SerialCommunicator());
   }
-  keepOwned(whole, parts, communicator_->rank(), domain_);
+  keepOwned(whole, parts, communicator_->rank(), at);
   // The slots along a Hilbert curve of the build's positions, as a re-ordering run keeps them
   // (memory traffic only: slots change no result).
   if (reorderInterval > 0 && !whole.reference.empty()) {

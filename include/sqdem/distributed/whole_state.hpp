@@ -31,9 +31,13 @@ struct WholeState {
 WholeState gatherWhole(const ParticleStore& p, std::span<const Vec3> reference, const ContactStore& contacts,
                        const ContactStore& layout, const Communicator& ranks);
 
-/// The particles of `whole` that `parts[rank]` owns (by their reference positions, or their
-/// positions wrapped into `box` before the first build), in id order, with their references.
-void keepOwned(WholeState& whole, const std::vector<SubDomain>& parts, int rank, const Domain& box);
+/// Where each particle of `whole` stood at the last build (its reference), or before the first
+/// build its position wrapped into `box`: what decides its owner.
+std::vector<Vec3> buildPositions(const WholeState& whole, const Domain& box);
+
+/// The particles of `whole` that `parts[rank]` owns at their build positions `at`, in id
+/// order, with their references.
+void keepOwned(WholeState& whole, const std::vector<SubDomain>& parts, int rank, std::span<const Vec3> at);
 
 /// The contacts of `whole` (taken from it) whose A is owned in p (after keepOwned and with its
 /// ghosts made), their slots found: A's by id, B's the copy of idB (owned, or a ghost) at the
