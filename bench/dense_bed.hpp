@@ -15,10 +15,11 @@ struct Case {
   bool curvatures;  ///< elliptic Hertz on the curvatures, else volume-sphere Hertz
 };
 
-inline World denseBed(const Case& c, int edge, std::uint64_t seed) {
+/// cells: the lattice's particles along x, y and z.
+inline World denseBed(const Case& c, const Eigen::Vector3i& cells, std::uint64_t seed) {
   const Vec3 spacing = 2.0 * 0.995 * c.shape.halfExtents();
   Domain domain;
-  domain.hi = edge * spacing;
+  domain.hi = cells.cast<double>().cwiseProduct(spacing);
   domain.periodic = {true, true, true};
   const Material m{1e7, 0.3, 1000.0, 0.3, 0.5};
   World world({c.shape}, {m}, domain, 0.1 * c.shape.halfExtents().minCoeff());
@@ -27,9 +28,9 @@ inline World denseBed(const Case& c, int edge, std::uint64_t seed) {
   world.setContactModel(0, 0, model);
   std::mt19937_64 rng(seed);
   std::normal_distribution<double> tilt(0.0, 0.02), speed(0.0, 0.01);
-  for (int i = 0; i < edge; ++i) {
-    for (int j = 0; j < edge; ++j) {
-      for (int k = 0; k < edge; ++k) {
+  for (int i = 0; i < cells.x(); ++i) {
+    for (int j = 0; j < cells.y(); ++j) {
+      for (int k = 0; k < cells.z(); ++k) {
         const Vec3 axis(tilt(rng), tilt(rng), tilt(rng));
         const Quat q = axis.norm() > 0 ? Quat(Eigen::AngleAxisd(axis.norm(), axis.normalized())) : Quat::Identity();
         const std::size_t n = world.addParticle(0, 0, (Vec3(i, j, k) + Vec3::Constant(0.5)).cwiseProduct(spacing), q);
@@ -40,5 +41,8 @@ inline World denseBed(const Case& c, int edge, std::uint64_t seed) {
   world.setTimeStep(0.2 * world.rayleighTimeStep());
   return world;
 }
+
+/// edge^3 particles.
+inline World denseBed(const Case& c, int edge, std::uint64_t seed) { return denseBed(c, Eigen::Vector3i::Constant(edge), seed); }
 
 }  // namespace sqdem

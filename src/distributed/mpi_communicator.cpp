@@ -58,6 +58,7 @@ class MpiCommunicator final : public Communicator {
     // inf + inf, inf - inf and NaN give the same class in any order.
     check(MPI_Allreduce(MPI_IN_PLACE, nonFinite.data(), static_cast<int>(nonFinite.size()), MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD),
           "MPI_Allreduce");
+    traffic_.reductions += 2;
     for (std::size_t k = 0; k < values.size(); ++k) {
       values[k] = ExactSum::fromLimbs(std::span<const std::int64_t, n>(limbs.data() + k * n, n), nonFinite[k]);
     }
@@ -161,9 +162,10 @@ class MpiCommunicator final : public Communicator {
   /// gather()'s: rank 0 receives from each rank in turn, every piece in order.
   static constexpr int gatherTag = 8;
   static constexpr std::uint64_t gatherPiece = std::uint64_t{1} << 30;
-  static void reduce(void* data, std::size_t count, MPI_Datatype type, MPI_Op op) {
+  void reduce(void* data, std::size_t count, MPI_Datatype type, MPI_Op op) const {
     if (count == 0) return;
     check(MPI_Allreduce(MPI_IN_PLACE, data, static_cast<int>(count), type, op, MPI_COMM_WORLD), "MPI_Allreduce");
+    ++traffic_.reductions;
   }
   int rank_ = 0, size_ = 1;
   bool owner_ = false;

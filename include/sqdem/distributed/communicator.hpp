@@ -25,10 +25,12 @@ class Communicator {
  public:
   virtual ~Communicator() = default;
 
-  /// The messages this process sent to other ranks and their bytes, since it started.
+  /// The messages this process sent to other ranks and their bytes, and the reductions over all
+  /// ranks it took part in (each one all-reduce), since it started.
   struct Traffic {
     long long messages = 0;
     long long bytes = 0;
+    long long reductions = 0;
   };
   const Traffic& traffic() const { return traffic_; }
 
