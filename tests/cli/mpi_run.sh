@@ -6,7 +6,7 @@
 # an error met on rank 0 alone (the output directory) stops every rank with one message.
 . "$(dirname "$0")/lib.sh"
 # Open MPI refuses root without these, and more ranks than cores without --oversubscribe.
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_mpi_yield_when_idle=1
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_mpi_yield_when_idle=1 OMP_WAIT_POLICY=passive
 mpi() { local ranks=$1; shift; timeout 300 mpirun --oversubscribe -np "$ranks" "$@"; }
 sed 's/log_every: 1000}/log_every: 1000, checkpoint_every_steps: 2500}/' "$source_dir/tests/scenes/decomposed_bed.yaml" \
   > "$scratch/bed.yaml"

@@ -6,7 +6,7 @@
 #   - the roller pass (examples/roller_pass.yaml): a spinning cylinder wall across a periodic
 #     direction, lowered into a poured bed and rolled across it.
 . "$(dirname "$0")/lib.sh"
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_mpi_yield_when_idle=1
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_mpi_yield_when_idle=1 OMP_WAIT_POLICY=passive
 examples="$source_dir/examples"
 
 same_at_two_ranks() {  # NAME SCENE
