@@ -3,6 +3,7 @@
 // stretched for ellipsoids, so each particle touches its six neighbours with a 0.5 % overlap,
 // mean coordination ~6), small random tilts and velocities.
 
+#include <array>
 #include <random>
 
 #include "sqdem/world/world.hpp"
@@ -14,6 +15,19 @@ struct Case {
   Superquadric shape;
   bool curvatures;  ///< elliptic Hertz on the curvatures, else volume-sphere Hertz
 };
+
+/// The benchmarks' four beds: ellipsoids with and without the curvature-exact law, n = 6
+/// blocks, spheres (R = 1 mm).
+inline const std::array<Case, 4>& denseBedCases() {
+  constexpr double R = 1e-3;
+  static const std::array<Case, 4> cases{{
+      {"ellipsoids 1:0.8:0.6, elliptic Hertz", Superquadric::ellipsoid(R, 0.8 * R, 0.6 * R), true},
+      {"ellipsoids 1:0.8:0.6, volume-sphere Hertz", Superquadric::ellipsoid(R, 0.8 * R, 0.6 * R), false},
+      {"superquadrics n = 6, elliptic Hertz", Superquadric(R, 0.8 * R, 0.6 * R, 6.0, 6.0), true},
+      {"spheres, Hertz", Superquadric::sphere(R), false},
+  }};
+  return cases;
+}
 
 /// cells: the lattice's particles along x, y and z.
 inline World denseBed(const Case& c, const Eigen::Vector3i& cells, std::uint64_t seed) {

@@ -24,18 +24,11 @@ int main(int argc, char** argv) {
   const int edge = argc > 1 ? std::atoi(argv[1]) : 22;
   const int steps = argc > 2 ? std::atoi(argv[2]) : 40;
   const int only = argc > 3 ? std::atoi(argv[3]) : -1;
-  const double R = 1e-3;
-  const Case cases[] = {
-      {"ellipsoids 1:0.8:0.6, elliptic Hertz", Superquadric::ellipsoid(R, 0.8 * R, 0.6 * R), true},
-      {"ellipsoids 1:0.8:0.6, volume-sphere Hertz", Superquadric::ellipsoid(R, 0.8 * R, 0.6 * R), false},
-      {"superquadrics n = 6, elliptic Hertz", Superquadric(R, 0.8 * R, 0.6 * R, 6.0, 6.0), true},
-      {"spheres, Hertz", Superquadric::sphere(R), false},
-  };
   std::printf("dense periodic bed, %d^3 = %d particles, %d steps per sample, median of 5 samples\n", edge,
               edge * edge * edge, steps);
   for (int index = 0; index < 4; ++index) {
     if (only >= 0 && index != only) continue;
-    const Case& c = cases[index];
+    const Case& c = denseBedCases()[index];
     for (const int threads : {1, 2}) {
       omp_set_num_threads(threads);
       World world = denseBed(c, edge, 1);

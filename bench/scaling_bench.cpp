@@ -64,18 +64,11 @@ int main(int argc, char** argv) {
   const int edge = argc > 1 ? std::atoi(argv[1]) : 46;
   const int steps = argc > 2 ? std::atoi(argv[2]) : 100;
   const int index = argc > 3 ? std::atoi(argv[3]) : 0;
-  const double R = 1e-3;
-  const Case cases[] = {
-      {"ellipsoids 1:0.8:0.6, elliptic Hertz", Superquadric::ellipsoid(R, 0.8 * R, 0.6 * R), true},
-      {"ellipsoids 1:0.8:0.6, volume-sphere Hertz", Superquadric::ellipsoid(R, 0.8 * R, 0.6 * R), false},
-      {"superquadrics n = 6, elliptic Hertz", Superquadric(R, 0.8 * R, 0.6 * R, 6.0, 6.0), true},
-      {"spheres, Hertz", Superquadric::sphere(R), false},
-  };
   if (edge < 2 || steps < 1 || index < 0 || index > 3) {
     if (ranks->rank() == 0) std::fprintf(stderr, "usage: bench_scaling [edge >= 2] [steps >= 1] [case 0-3]\n");
     return 2;
   }
-  const Case& c = cases[index];
+  const Case& c = denseBedCases()[index];
   const int rankCount = ranks->size();
   const bool speaks = ranks->rank() == 0;
 

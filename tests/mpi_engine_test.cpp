@@ -45,10 +45,8 @@ std::map<std::uint32_t, State> gathered(const World& world) {
     out.put(p.id[i]);
     out.put(State{p.position[i], p.velocity[i], p.angularVelocity[i], p.force[i], p.torque[i], p.orientation[i]});
   }
-  std::vector<std::string> outbox(ranks.size());
-  outbox[0] = out.bytes();
   std::map<std::uint32_t, State> all;
-  for (const std::string& m : ranks.exchangeAll(std::move(outbox))) {
+  for (const std::string& m : ranks.gather(out.bytes())) {
     CheckpointReader in(m);
     while (in.left() > 0) {
       std::uint32_t id = 0;
@@ -81,10 +79,8 @@ ContactTrace stepAndTrace(World& world, int steps) {
       out.put(ContactRecord{c.spring(), c.force(), c.point(), ranks.rank(), c.onWall() || c.b() < world.particles().size()});
     }
   }
-  std::vector<std::string> outbox(ranks.size());
-  outbox[0] = out.bytes();
   ContactTrace all;
-  for (const std::string& m : ranks.exchangeAll(std::move(outbox))) {
+  for (const std::string& m : ranks.gather(out.bytes())) {
     CheckpointReader in(m);
     while (in.left() > 0) {
       int s = 0;
