@@ -164,3 +164,65 @@ TEST(EllipsoidDetector, CurvaturesAndCommonNormalAgreeWithTheGeneralGauge) {
   }
   EXPECT_GT(solved, 150);
 }
+
+namespace {
+
+/// A periodic 4 x 4 x 4 lattice of `shape` (touching its six neighbours before the tilts, small random
+/// tilts and velocities): persistent contacts that move a little every step, as in a settled bed.
+World jigglingLattice(const Superquadric& shape, bool confirmWarm) {
+  const Vec3 spacing = 2.0 * shape.halfExtents();
+  const Domain box{.lo = Vec3::Zero(), .hi = 4.0 * spacing, .periodic = {true, true, true}};
+  World world({shape}, {Material{1e7, 0.3, 1000.0, 0.3, 0.5}}, box, 0.1 * shape.halfExtents().minCoeff());
+  world.setContactModel(0, 0, world.defaultContactModel(0, 0));
+  DetectorControl control;
+  control.confirmWarm = confirmWarm;
+  world.setDetectorControl(control);
+  std::mt19937_64 rng(7);
+  std::normal_distribution<double> tilt(0.0, 1e-4), speed(0.0, 1e-5);
+  for (int i = 0; i < 64; ++i) {
+    const Vec3 axis(tilt(rng), tilt(rng), tilt(rng));
+    const std::size_t n = world.addParticle(0, 0, (Vec3(i % 4, i / 4 % 4, i / 16) + Vec3::Constant(0.5)).cwiseProduct(spacing),
+                                            Quat(Eigen::AngleAxisd(axis.norm(), axis.normalized())));
+    world.particles().velocity[n] = Vec3(speed(rng), speed(rng), speed(rng));
+    world.particles().setAngularVelocity(n, Vec3(speed(rng), speed(rng), speed(rng)) / shape.halfExtents().minCoeff());
+  }
+  world.setTimeStep(0.2 * world.rayleighTimeStep());
+  return world;
+}
+
+}  // namespace
+
+// warm_skip.hpp, detector.hpp (confirmContact): a warm answer confirmed from the kept normals is
+// the warm solve's answer to the bit, so a run that confirms and one that evaluates every surface
+// stay identical at every step (positions, orientations, velocities, every contact's force), with
+// the same detector calls and iterations, while the first confirms a share of its warm answers.
+TEST(ConfirmedWarmAnswers, SameBitsAsEvaluatingEverySurface) {
+  for (const Superquadric& shape : {Superquadric::ellipsoid(1.3e-3, 0.9e-3, 0.8e-3), Superquadric(1.1e-3, 0.75e-3, 0.7e-3, 6.0, 6.0)}) {
+    World confirming = jigglingLattice(shape, true), evaluating = jigglingLattice(shape, false);
+    for (int step = 0; step < 1500; ++step) {
+      confirming.step();
+      evaluating.step();
+      const ParticleStore &p = confirming.particles(), &q = evaluating.particles();
+      for (std::size_t i = 0; i < p.size(); ++i) {
+        ASSERT_EQ(p.position[i], q.position[i]) << "step " << step << ", particle " << i;
+        ASSERT_EQ(p.orientation[i].coeffs(), q.orientation[i].coeffs()) << "step " << step << ", particle " << i;
+        ASSERT_EQ(p.velocity[i], q.velocity[i]) << "step " << step << ", particle " << i;
+        ASSERT_EQ(p.angularVelocity[i], q.angularVelocity[i]) << "step " << step << ", particle " << i;
+      }
+      ASSERT_EQ(confirming.interactions().actingCount(), evaluating.interactions().actingCount()) << "step " << step;
+      const auto mine = confirming.contacts(), theirs = evaluating.contacts();
+      for (auto c = mine.begin(), e = theirs.begin(); c != mine.end(); ++c, ++e) {
+        ASSERT_EQ((*c).key(), (*e).key());
+        ASSERT_EQ((*c).force(), (*e).force()) << "step " << step;
+      }
+    }
+    const ContactStatistics &sc = confirming.statistics(), &se = evaluating.statistics();
+    std::printf("n1 = %g: %lld detector calls, %.2f iterations per call, %lld confirmed (%.1f %%)\n", shape.n1(),
+                sc.detectorCalls, static_cast<double>(sc.detectorIterations) / sc.detectorCalls, sc.detectorConfirmations,
+                100.0 * sc.detectorConfirmations / sc.detectorCalls);
+    EXPECT_EQ(sc.detectorCalls, se.detectorCalls);
+    EXPECT_EQ(sc.detectorIterations, se.detectorIterations);
+    EXPECT_EQ(se.detectorConfirmations, 0);
+    EXPECT_GT(sc.detectorConfirmations, sc.detectorCalls / 10);  // the path this test is about was taken
+  }
+}

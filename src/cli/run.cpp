@@ -68,8 +68,10 @@ void printSummary(const World& world, const RunReport& report, double wall, cons
   std::printf("memory: %.0f B per candidate contact (%lld candidates), %.0f B per particle\n",
               candidates ? static_cast<double>(contactBytes) / candidates : 0.0, candidates,
               static_cast<double>(allParticleBytes) / std::max<long long>(particles, 1));
-  std::printf("detector: %lld calls, %.2f iterations per call, %lld unresolved, %lld deep overlaps\n",
+  std::printf("detector: %lld calls, %.2f iterations per call, %.1f %% confirmed without evaluation, %lld unresolved, "
+              "%lld deep overlaps\n",
               st.detectorCalls, st.detectorCalls ? static_cast<double>(st.detectorIterations) / st.detectorCalls : 0.0,
+              st.detectorCalls ? 100.0 * static_cast<double>(st.detectorConfirmations) / st.detectorCalls : 0.0,
               st.detectorFailures, st.deepOverlaps);
   if (st.detectorFailures > 0) {
     std::printf("  unresolved by status:");

@@ -54,9 +54,12 @@ Iterate<Surfaces> evaluate(const PairFrame& f, const Surfaces& surfaces, const V
   return it;
 }
 
-/// Sets B's tangent basis and it.J; it.finite becomes false if J is not finite.
+/// Sets B's tangent basis and it.J (the surfaces' Hessians first); it.finite becomes false if J is
+/// not finite.
 template <class Surfaces>
 void withJacobian(const Surfaces& surfaces, Iterate<Surfaces>& it) {
+  surfaces.addHessianOnA(it.a);
+  surfaces.addHessianOnB(it.b);
   const double L = it.lengthScale;
   const Vec3& nB = it.b.normal;
   const Vec3 u1 = it.t1 - nB * nB.dot(it.t1), u2 = it.t2 - nB * nB.dot(it.t2);
@@ -173,10 +176,15 @@ ContactGeometry finish(const PairFrame& f, const Surfaces& surfaces, const Pose&
   g.pointA = poseA.toWorld(g.localPointA);
   g.pointB = poseA.toWorld(it.b.point);
   g.normal = RA * it.a.normal;
+  g.localNormalA = it.a.normal;
+  g.localNormalB = f.R.transpose() * it.b.normal;
   g.overlap = -(it.b.point - it.a.point).dot(it.a.normal);
   if (curvatures) {
-    g.curvatureA = surfaces.curvatures(it.a).rotated(RA);
-    g.curvatureB = surfaces.curvatures(it.b).rotated(RA);
+    typename Surfaces::Point a = it.a, b = it.b;
+    surfaces.addHessianOnA(a);
+    surfaces.addHessianOnB(b);
+    g.curvatureA = surfaces.curvatures(a).rotated(RA);
+    g.curvatureB = surfaces.curvatures(b).rotated(RA);
   }
   g.iterations = iterations;
   g.residual = it.norm;
@@ -487,23 +495,34 @@ ContactGeometry solvePair(const PairFrame& f, const Pose& poseA, const DetectorS
   return coldSolve(f, surfaces, poseA, distance > 0.0 ? Vec3(f.c / distance) : Vec3::UnitX(), 0, settings, nullptr);
 }
 
+/// The pair seen from A's body frame (one construction for the solve and confirmContact: the same bits).
+PairFrame pairFrame(const Superquadric& A, const Mat3& RA, const Superquadric& B, const Mat3& RB, const Vec3& centres) {
+  return {A, B, RA.transpose() * RB, RA.transpose() * centres, referenceVolumeRadius(A, B)};
+}
+
+/// The culls of a pair that may be apart (bounding spheres, then boxes): its Separated answer, or
+/// nullopt. A pair that touched at its last solve is not further apart than the cut-off one step
+/// later: it is not culled.
+std::optional<ContactGeometry> culled(const Superquadric& A, const Pose& poseA, const Mat3& RA, const Superquadric& B,
+                                      const Pose& poseB, const Mat3& RB, const DetectorSettings& settings,
+                                      const WarmStart* previous) {
+  if (previous != nullptr && previous->overlap >= 0.0) return std::nullopt;
+  const double sphereGap = (poseB.position - poseA.position).norm() - A.boundingRadius() - B.boundingRadius();
+  if (sphereGap > settings.cutoff) return separated(sphereGap);
+  const OrientedBox boxA{poseA.position, RA, A.halfExtents()};
+  const OrientedBox boxB{poseB.position, RB, B.halfExtents()};
+  if (!boxesOverlap(boxA, boxB, 0.5 * settings.cutoff)) return separated(std::max(sphereGap, settings.cutoff));
+  return std::nullopt;
+}
+
 ContactGeometry solve(const Superquadric& A, const Pose& poseA, const Superquadric& B,
                       const Pose& poseB, const DetectorSettings& settings, const WarmStart* previous) {
   if (A.isSphere() && B.isSphere()) return sphereSphere(A, poseA, B, poseB, settings);
 
   const Vec3 centres = poseB.position - poseA.position;
   const Mat3 RA = poseA.rotation(), RB = poseB.rotation();
-  // The culls are for pairs that may be apart; a pair that touched at the last solve is not
-  // further apart than the cut-off one step later.
-  const bool touched = previous != nullptr && previous->overlap >= 0.0;
-  if (!touched) {
-    const double sphereGap = centres.norm() - A.boundingRadius() - B.boundingRadius();
-    if (sphereGap > settings.cutoff) return separated(sphereGap);
-    const OrientedBox boxA{poseA.position, RA, A.halfExtents()};
-    const OrientedBox boxB{poseB.position, RB, B.halfExtents()};
-    if (!boxesOverlap(boxA, boxB, 0.5 * settings.cutoff)) return separated(std::max(sphereGap, settings.cutoff));
-  }
-  const PairFrame f{A, B, RA.transpose() * RB, RA.transpose() * centres, referenceVolumeRadius(A, B)};
+  if (const std::optional<ContactGeometry> apart = culled(A, poseA, RA, B, poseB, RB, settings, previous)) return *apart;
+  const PairFrame f = pairFrame(A, RA, B, RB, centres);
   if (A.isEllipsoid() && B.isEllipsoid()) return solvePair<EllipsoidSurfaces>(f, poseA, settings, previous);
   return solvePair<SuperquadricSurfaces>(f, poseA, settings, previous);
 }
@@ -518,6 +537,38 @@ ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const Su
 ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const Superquadric& B,
                               const Pose& poseB, const DetectorSettings& settings, const WarmStart& previous) {
   return solve(A, poseA, B, poseB, settings, &previous);
+}
+
+std::optional<ContactGeometry> confirmContact(const Superquadric& A, const Pose& poseA, const Superquadric& B,
+                                              const Pose& poseB, const DetectorSettings& settings,
+                                              const WarmStart& previous, const Vec3& normalA, const Vec3& normalB) {
+  const Mat3 RA = poseA.rotation(), RB = poseB.rotation();
+  const PairFrame f = pairFrame(A, RA, B, RB, poseB.position - poseA.position);
+  // evaluate() at the warm start's points, in A's frame, with the kept normals: |r|^2 is the
+  // tangential part (to nA) of L (nA + nB) and of pB - pA, whatever the tangent basis.
+  const Vec3& pA = previous.localPointA;
+  const Vec3 pB = f.fromB(previous.localPointB);
+  const auto tangential = [&](const Vec3& v) { return Vec3(v - v.dot(normalA) * normalA); };
+  const Vec3 normalSum = tangential(normalA + f.R * normalB), gap = tangential(pB - pA);
+  const double residual = std::sqrt(f.lengthScale * f.lengthScale * normalSum.squaredNorm() + gap.squaredNorm());
+  if (!(residual <= (1.0 - 1e-3) * settings.tolerance * f.lengthScale)) return std::nullopt;
+  if (culled(A, poseA, RA, B, poseB, RB, settings, &previous)) return std::nullopt;  // solve() returns the cull's answer
+  // finish() of that first iterate, which newtonSolve returns.
+  ContactGeometry g;
+  g.status = ContactStatus::Converged;
+  g.localPointA = pA;
+  g.localPointB = f.toB(pB);
+  g.pointA = poseA.toWorld(pA);
+  g.pointB = poseA.toWorld(pB);
+  g.normal = RA * normalA;
+  g.localNormalA = normalA;
+  g.localNormalB = normalB;
+  g.overlap = -(pB - pA).dot(normalA);
+  g.residual = residual;
+  // newtonSolve's checks (the normals are antiparallel: nB = -nA to the tolerance) and solvePair's
+  // continuation.
+  if (!(normalA.dot(f.c) >= 0.0) || -g.overlap > settings.cutoff || !continues(f, g, &previous)) return std::nullopt;
+  return g;
 }
 
 ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const Superquadric& B,

@@ -2,6 +2,7 @@
 // over a group's contacts with the law fixed for the whole loop.
 
 #include <algorithm>
+#include <optional>
 #include <cmath>
 #include <variant>
 
@@ -39,9 +40,12 @@ template <PairKind Kind>
 
 /// The pair kind's detector for contact k, warm-started from the store; the curvatures only
 /// when asked for (a law that does not use them, or takes them from its cache, does not pay).
+/// A quiet pair's warm answer (its last solve took no Newton step) is confirmed from its kept
+/// normals where it still holds (skip: the contact's record, null when not kept;
+/// warm_skip.hpp), counted in confirmations.
 template <PairKind Kind>
 ContactGeometry detect(const InteractionScene& scene, const std::vector<double>& speedBound, const ContactModel& model,
-                       ContactStore& s, std::uint32_t k, bool curvatures) {
+                       ContactStore& s, std::uint32_t k, bool curvatures, detail::WarmSkip* skip, long long& confirmations) {
   const ParticleStore& p = scene.particles;
   const std::uint32_t a = s.a[k], b = s.b[k];
   const Superquadric& A = scene.shapes[p.shape[a]];
@@ -68,12 +72,25 @@ ContactGeometry detect(const InteractionScene& scene, const std::vector<double>&
       if (s.separation[k] > model.reach) return ContactGeometry{};  // Separated, no iterations
     }
     const Superquadric& B = scene.shapes[p.shape[b]];
-    const Pose poseB{p.position[b], p.orientation[b]};
-    ContactGeometry g;
-    if (s.status[k] == ContactStatus::Converged && scene.detector.warmStart) {
-      g = detectContact(A, poseOf(p, a), B, poseB, settings, WarmStart{s.localA[k], s.localB[k], s.overlap[k]});
-    } else {
-      g = detectContact(A, poseOf(p, a), B, poseB, settings);
+    const Pose poseA = poseOf(p, a), poseB = poseOf(p, b);
+    const bool warm = s.status[k] == ContactStatus::Converged && scene.detector.warmStart;
+    const WarmStart previous{s.localA[k], s.localB[k], s.overlap[k]};
+    std::optional<ContactGeometry> confirmed;
+    if (warm && skip != nullptr && skip->left > 0) {
+      confirmed = confirmContact(A, poseA, B, poseB, settings, previous, skip->normalA, skip->normalB);
+    }
+    const ContactGeometry g = confirmed ? *confirmed
+                              : warm    ? detectContact(A, poseA, B, poseB, settings, previous)
+                                        : detectContact(A, poseA, B, poseB, settings);
+    if (skip != nullptr) {
+      if (confirmed) {
+        --skip->left;
+        ++confirmations;
+      } else if (g.converged() && g.iterations == 0) {  // a quiet pair: its warm start still solved it
+        skip->restart(g.localNormalA, g.localNormalB);
+      } else {
+        skip->unset();
+      }
     }
     s.separation[k] = g.status == ContactStatus::Separated ? -g.overlap : 0.0;
     return g;
@@ -149,12 +166,12 @@ ContactModel asRun(ContactModel model, PairKind kind) {
 /// parallel region: the contacts are shared out among them.
 template <PairKind Kind, NormalLawComponent Law, bool Ledger>
 void groupKernel(const std::vector<std::uint32_t>& members, const ContactModel& pairModel, const Law& law,
-                 const InteractionScene& scene, const std::vector<double>& speedBound, ContactStore& s,
-                 ContactStatistics& statistics) {
+                 const InteractionScene& scene, const std::vector<double>& speedBound, std::vector<detail::WarmSkip>* skips,
+                 ContactStore& s, ContactStatistics& statistics) {
   const ContactModel model = asRun(pairModel, Kind);
   const bool cached = cachesCurvatures(model, Kind);
   const double cosHalfAngle = std::cos(0.5 * model.curvatureTolerance);
-  long long calls = 0, iterations = 0, failures = 0, deep = 0, lost = 0, invalid = 0;
+  long long calls = 0, iterations = 0, confirmations = 0, failures = 0, deep = 0, lost = 0, invalid = 0;
   long long byStatus[contactStatusCount] = {};
   const auto count = static_cast<std::ptrdiff_t>(members.size());
 #pragma omp for schedule(dynamic, 64) nowait
@@ -170,7 +187,9 @@ void groupKernel(const std::vector<std::uint32_t>& members, const ContactModel& 
       if constexpr (round(Kind)) {
         return detectRound<Kind>(scene, s, k);
       } else {
-        return detect<Kind>(scene, speedBound, model, s, k, model.usesCurvatures() && !cached);
+        const bool curvatures = model.usesCurvatures() && !cached;
+        return detect<Kind>(scene, speedBound, model, s, k, curvatures, skips != nullptr && !curvatures ? &(*skips)[k] : nullptr,
+                            confirmations);
       }
     }();
     s.status[k] = g.status;
@@ -242,6 +261,7 @@ void groupKernel(const std::vector<std::uint32_t>& members, const ContactModel& 
   {
     statistics.detectorCalls += calls;
     statistics.detectorIterations += iterations;
+    statistics.detectorConfirmations += confirmations;
     statistics.detectorFailures += failures;
     for (int k = 0; k < contactStatusCount; ++k) statistics.failuresByStatus[k] += byStatus[k];
     statistics.deepOverlaps += deep;
@@ -254,29 +274,27 @@ void groupKernel(const std::vector<std::uint32_t>& members, const ContactModel& 
 /// stored energy can: the scene loader refuses the others).
 template <PairKind Kind, NormalLawComponent Law>
 void runGroup(const std::vector<std::uint32_t>& members, const ContactModel& model, const Law& law,
-              const InteractionScene& scene, const std::vector<double>& speedBound, ContactStore& s,
-              ContactStatistics& statistics) {
+              const InteractionScene& scene, const std::vector<double>& speedBound, std::vector<detail::WarmSkip>* skips,
+              ContactStore& s, ContactStatistics& statistics) {
   if constexpr (StoredEnergyLaw<Law>) {
-    if (s.withEnergy) return groupKernel<Kind, Law, true>(members, model, law, scene, speedBound, s, statistics);
+    if (s.withEnergy) return groupKernel<Kind, Law, true>(members, model, law, scene, speedBound, skips, s, statistics);
   }
-  groupKernel<Kind, Law, false>(members, model, law, scene, speedBound, s, statistics);
+  groupKernel<Kind, Law, false>(members, model, law, scene, speedBound, skips, s, statistics);
 }
 
 template <NormalLawComponent Law>
 void runGroup(PairKind kind, const std::vector<std::uint32_t>& members, const ContactModel& model, const Law& law,
-              const InteractionScene& scene, const std::vector<double>& speedBound, ContactStore& s,
-              ContactStatistics& statistics) {
+              const InteractionScene& scene, const std::vector<double>& speedBound, std::vector<detail::WarmSkip>* skips,
+              ContactStore& s, ContactStatistics& statistics) {
+  const auto run = [&]<PairKind Kind>() { runGroup<Kind>(members, model, law, scene, speedBound, skips, s, statistics); };
   switch (kind) {
-    case PairKind::SphereSphere: return runGroup<PairKind::SphereSphere>(members, model, law, scene, speedBound, s, statistics);
-    case PairKind::EllipsoidPair: return runGroup<PairKind::EllipsoidPair>(members, model, law, scene, speedBound, s, statistics);
-    case PairKind::SuperquadricPair:
-      return runGroup<PairKind::SuperquadricPair>(members, model, law, scene, speedBound, s, statistics);
-    case PairKind::SphereWall: return runGroup<PairKind::SphereWall>(members, model, law, scene, speedBound, s, statistics);
-    case PairKind::ParticleWall: return runGroup<PairKind::ParticleWall>(members, model, law, scene, speedBound, s, statistics);
-    case PairKind::ParticleCylinder:
-      return runGroup<PairKind::ParticleCylinder>(members, model, law, scene, speedBound, s, statistics);
-    case PairKind::ParticleMesh:
-      return runGroup<PairKind::ParticleMesh>(members, model, law, scene, speedBound, s, statistics);
+    case PairKind::SphereSphere: return run.template operator()<PairKind::SphereSphere>();
+    case PairKind::EllipsoidPair: return run.template operator()<PairKind::EllipsoidPair>();
+    case PairKind::SuperquadricPair: return run.template operator()<PairKind::SuperquadricPair>();
+    case PairKind::SphereWall: return run.template operator()<PairKind::SphereWall>();
+    case PairKind::ParticleWall: return run.template operator()<PairKind::ParticleWall>();
+    case PairKind::ParticleCylinder: return run.template operator()<PairKind::ParticleCylinder>();
+    case PairKind::ParticleMesh: return run.template operator()<PairKind::ParticleMesh>();
   }
 }
 
@@ -287,6 +305,7 @@ void Interactions::compute(const InteractionScene& scene, std::vector<double>& s
   const auto n = static_cast<std::ptrdiff_t>(p.slots());  // ghosts too
   // Only the iterative kinds cull separated pairs by the particles' speed bounds.
   const bool bounded = std::ranges::any_of(groups_, [](const Group& g) { return !round(g.kind) && !withWall(g.kind); });
+  std::vector<detail::WarmSkip>* skips = scene.detector.confirmWarm ? &warmSkips_ : nullptr;
   // One parallel region per computation: the groups' loops do not wait for each other (each
   // writes only its own contacts), so a step pays one fork and one join here.
 #pragma omp parallel
@@ -299,7 +318,7 @@ void Interactions::compute(const InteractionScene& scene, std::vector<double>& s
     }
     for (const Group& group : groups_) {
       const ContactModel& model = scene.models[group.model];
-      std::visit([&](const auto& law) { runGroup(group.kind, group.members, model, law, scene, speedBound, store_, statistics); },
+      std::visit([&](const auto& law) { runGroup(group.kind, group.members, model, law, scene, speedBound, skips, store_, statistics); },
                  model.normal);
     }
   }

@@ -22,11 +22,7 @@ Interactions Interactions::restore(ContactStore store, const InteractionScene& s
                   "contact body B");
   }
   out.store_ = std::move(store);
-  out.sortKeys();
-  // The force-carrying contacts in key order, as the last reduction listed them.
-  for (const std::uint32_t k : out.keyOrder_) {
-    if (out.store_.acting[k]) out.interacting_.push_back(k);
-  }
+  out.storeChanged();  // the acting flags are as the last computation left them
   out.regroup(scene);
   out.indexInvolvement(n, ghostOwner);
   return out;

@@ -51,14 +51,13 @@ void Interactions::setCandidates(const std::vector<CandidateKey>& candidates, co
   }
   std::vector<std::uint32_t> previousOrder = std::move(keyOrder_);
   const ContactStore previous = std::exchange(store_, std::move(next));
-  sortKeys();
+  storeChanged();
   // Carry the state of pairs that persist: both stores walked in key order.
   auto old = previousOrder.begin();
   for (const std::uint32_t k : keyOrder_) {
     while (old != previousOrder.end() && previous.key(*old) < store_.key(k)) ++old;
     if (old != previousOrder.end() && previous.key(*old) == store_.key(k)) store_.carryOver(k, previous, *old);
   }
-  interacting_.clear();
   remote_.clear();
   regroup(scene);
   indexInvolvement(scene.particles.size(), ghostOwner);
@@ -70,12 +69,12 @@ void Interactions::removeLeaving(const std::vector<std::uint8_t>& leaving) {
     if (leaving[store_.a[k]] == 0) staying.push_back(k);
   }
   store_.permute(staying);
-  sortKeys();
+  storeChanged();
 }
 
 void Interactions::readArrived(CheckpointReader& in, std::uint64_t count) {
   for (std::uint64_t m = 0; m < count; ++m) store_.read(in);
-  sortKeys();
+  storeChanged();
 }
 
 void Interactions::setRemoteContacts(const std::vector<RemoteContact>& contacts, std::size_t owned,
@@ -85,10 +84,27 @@ void Interactions::setRemoteContacts(const std::vector<RemoteContact>& contacts,
   indexInvolvement(owned, ghostOwner);
 }
 
-void Interactions::sortKeys() {
+void Interactions::storeChanged() {
+  warmSkips_.assign(store_.size(), {});
+  interactingListed_ = false;
   keyOrder_.resize(store_.size());
   std::iota(keyOrder_.begin(), keyOrder_.end(), 0u);
   std::sort(keyOrder_.begin(), keyOrder_.end(), [&](std::uint32_t x, std::uint32_t y) { return store_.key(x) < store_.key(y); });
+  wallContacts_.clear();
+  for (const std::uint32_t k : keyOrder_) {
+    if (store_.onWall(k)) wallContacts_.push_back(k);
+  }
+}
+
+const std::vector<std::uint32_t>& Interactions::listActing() const {
+  if (!interactingListed_) {
+    interacting_.clear();
+    for (const std::uint32_t k : keyOrder_) {
+      if (store_.acting[k]) interacting_.push_back(k);
+    }
+    interactingListed_ = true;
+  }
+  return interacting_;
 }
 
 void Interactions::fitStore(const InteractionScene& scene) {
@@ -103,7 +119,7 @@ void Interactions::fitStore(const InteractionScene& scene) {
     fitted.carryOver(k, store_, k);
   }
   store_ = std::move(fitted);
-  interacting_.clear();
+  interactingListed_ = false;
 }
 
 void Interactions::regroup(const InteractionScene& scene) {
@@ -159,7 +175,9 @@ std::size_t Interactions::bytes() const {
   std::size_t total = 0;
   ContactStore::forEachArray(store_, [&](const auto& array) { total += array.capacity() * sizeof(array[0]); });
   for (const Group& g : groups_) total += g.members.capacity() * sizeof(std::uint32_t);
-  total += (keyOrder_.capacity() + involvementStart_.capacity() + involvement_.capacity() + interacting_.capacity()) *
+  total += warmSkips_.capacity() * sizeof(detail::WarmSkip);
+  total += (keyOrder_.capacity() + involvementStart_.capacity() + involvement_.capacity() + interacting_.capacity() +
+            wallContacts_.capacity()) *
            sizeof(std::uint32_t);
   return total;
 }

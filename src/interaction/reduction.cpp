@@ -47,13 +47,11 @@ void Interactions::reduce(ParticleStore& p, const Vec3& gravity, double drag, co
       }
     }
   }
-  // The force-carrying contacts in key order, and the walls' shares, in one pass.
+  // The walls' shares, in key order.
   wallLoads.assign(walls.size(), WallLoadSum{});
-  interacting_.clear();
-  for (const std::uint32_t k : keyOrder_) {
+  interactingListed_ = false;
+  for (const std::uint32_t k : wallContacts_) {
     if (!s.acting[k]) continue;
-    interacting_.push_back(k);
-    if (!s.onWall(k)) continue;
     const std::uint32_t w = s.b[k] & ~wallFlag;
     const Vec3 torque = (s.point[k] - s.wallImage[k] - walls[w].reference()).cross(s.force[k]) +
                         (s.withRolling ? s.moment[k] : Vec3::Zero());

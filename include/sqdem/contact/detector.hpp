@@ -58,6 +58,8 @@
 // Before any iteration, pairs further apart than the cut-off are culled by bounding spheres and
 // oriented boxes. The result is never NaN/inf: an unresolved pair is a status (contact_geometry.hpp).
 
+#include <optional>
+
 #include "sqdem/contact/contact_geometry.hpp"
 #include "sqdem/contact/round_contact.hpp"
 #include "sqdem/geometry/cylinder.hpp"
@@ -93,6 +95,19 @@ struct WarmStart {
 /// Warm solve: Newton from the previous points; a cold solve if that does not settle quickly.
 ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const Superquadric& B,
                               const Pose& poseB, const DetectorSettings& settings, const WarmStart& previous);
+
+/// A warm answer confirmed without evaluating a surface: previous is the pair's last converged
+/// answer and normalA, normalB the outward normals there in A's and B's
+/// body frames (ContactGeometry::localNormalA, localNormalB). The residual is computed from the
+/// new relative pose; where it is within (1 - 1e-3) of the tolerance (the margin covers the
+/// round-off of kept against evaluated normals) and the warm solve would keep the answer (its
+/// normal faces B, the overlap did not jump, the pair is within the cut-off and passes the culls
+/// of a pair that was apart), the result is the
+/// warm solve's answer to the same bits (its residual to round-off); otherwise nullopt: solve. Needs no
+/// curvatures (settings.curvatures is not honoured).
+std::optional<ContactGeometry> confirmContact(const Superquadric& A, const Pose& poseA, const Superquadric& B,
+                                              const Pose& poseB, const DetectorSettings& settings,
+                                              const WarmStart& previous, const Vec3& normalA, const Vec3& normalB);
 
 /// Warm solve from a previous result when it converged, otherwise a cold solve.
 ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const Superquadric& B,

@@ -23,6 +23,7 @@
 #include "sqdem/interaction/contact_model.hpp"
 #include "sqdem/interaction/contact_store.hpp"
 #include "sqdem/interaction/pair_kind.hpp"
+#include "sqdem/interaction/warm_skip.hpp"
 #include "sqdem/math/exact_sum.hpp"
 
 namespace sqdem {
@@ -34,6 +35,7 @@ class CheckpointWriter;
 struct ContactStatistics {
   long long detectorCalls = 0;
   long long detectorIterations = 0;
+  long long detectorConfirmations = 0;  ///< warm answers confirmed without evaluating a surface (warm_skip.hpp)
   long long detectorFailures = 0;  ///< statuses other than Converged/Separated (contact skipped)
   /// detectorFailures by ContactStatus (index = the status's value).
   std::array<long long, contactStatusCount> failuresByStatus{};
@@ -46,7 +48,7 @@ struct ContactStatistics {
   /// Calls f(counter) for every counter, in a fixed order (sums, reductions over ranks).
   template <typename Statistics, typename F>
   static void forEachCount(Statistics& s, F&& f) {
-    for (auto* count : {&s.detectorCalls, &s.detectorIterations, &s.detectorFailures, &s.deepOverlaps, &s.lostAdhesions,
+    for (auto* count : {&s.detectorCalls, &s.detectorIterations, &s.detectorConfirmations, &s.detectorFailures, &s.deepOverlaps, &s.lostAdhesions,
                         &s.lawFailures}) {
       f(*count);
     }
@@ -64,6 +66,10 @@ struct DetectorControl {
   /// beds: 0.19 instead of 0.70 iterations per call). Measured in bench/accuracy_bench.cpp.
   double tolerance = 1e-6;
   bool warmStart = true;  ///< start from the last solution; false: every solve is cold
+  /// Confirm a pair's warm answer from its kept normals where its residual at the new
+  /// poses is within the tolerance (warm_skip.hpp): the same results to the bit; false
+  /// evaluates every surface.
+  bool confirmWarm = true;
 };
 
 /// What the kernels read of the world (all unchanged during a force computation).
@@ -132,8 +138,8 @@ class Interactions {
   /// computed first when a group culls by them; adds to the statistics.
   void compute(const InteractionScene& scene, std::vector<double>& speedBound, ContactStatistics& statistics);
   /// Per particle: F = m (g - c v) plus its contacts' loads, and the torques; per wall this
-  /// process's share of its load (walls.size() sums, reset here); the list of force-carrying
-  /// contacts. remote[m]: the load of the m-th contact of setRemoteContacts.
+  /// process's share of its load (walls.size() sums, reset here). remote[m]: the load of the
+  /// m-th contact of setRemoteContacts.
   void reduce(ParticleStore& particles, const Vec3& gravity, double drag, const std::vector<Wall>& walls,
               std::vector<WallLoadSum>& wallLoads, std::span<const LoadOnB> remote = {});
 
@@ -152,12 +158,13 @@ class Interactions {
   /// Contact k's load on its B (a particle), as B's sum adds it.
   LoadOnB loadOnB(std::uint32_t k, const ParticleStore& particles) const;
 
-  /// The contacts that carried force in the last computation, in key order.
+  /// The contacts that carried force in the last computation, in key order (listed when first
+  /// asked for after a computation: the steps need no list).
   auto acting() const {
-    return interacting_ | std::views::transform([this](std::uint32_t k) { return ContactView(store_, k); });
+    return listActing() | std::views::transform([this](std::uint32_t k) { return ContactView(store_, k); });
   }
   const ContactStore& store() const { return store_; }
-  std::size_t actingCount() const { return interacting_.size(); }
+  std::size_t actingCount() const { return listActing().size(); }
   /// This process's share of the contacts' ContactEnergy of the last computation, exact sums
   /// of its fields in their order (stored, normal, damping, tangential); zero without a store
   /// made withEnergy.
@@ -180,9 +187,11 @@ class Interactions {
     std::vector<std::uint32_t> members;  ///< contact indices, ascending
   };
   void regroup(const InteractionScene& scene);
-  /// keyOrder_ from the store's keys.
-  void sortKeys();
+  /// After the store's slots changed: keyOrder_ from its keys, the skip records unset.
+  void storeChanged();
   void indexInvolvement(std::size_t owned, const std::vector<std::uint32_t>& ghostOwner);
+  /// interacting_, made from the acting flags in key order if the store changed since.
+  const std::vector<std::uint32_t>& listActing() const;
 
   ContactStore store_;
   std::vector<Group> groups_;
@@ -197,7 +206,10 @@ class Interactions {
   /// contact index, | bodyBFlag where i is body B (| imageFlag through its image), or remoteFlag | m
   std::vector<std::uint32_t> involvement_;
   std::vector<RemoteContact> remote_;            ///< setRemoteContacts' list, in its order
-  std::vector<std::uint32_t> interacting_;       ///< the force-carrying contacts, in key order
+  std::vector<std::uint32_t> wallContacts_;      ///< the contacts with a wall, in key order
+  mutable std::vector<std::uint32_t> interacting_;  ///< the force-carrying contacts, in key order (listActing)
+  mutable bool interactingListed_ = false;
+  std::vector<detail::WarmSkip> warmSkips_;      ///< by store slot (warm_skip.hpp)
 };
 
 }  // namespace sqdem
