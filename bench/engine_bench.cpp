@@ -50,11 +50,12 @@ int main(int argc, char** argv) {
       const double calls = static_cast<double>(st.detectorCalls - statsBefore.detectorCalls);
       std::size_t pairContacts = 0;
       for (const ContactView k : world.contacts()) pairContacts += k.onWall() ? 0 : 1;
-      std::printf("%-44s %d thread(s): %.3g particle-steps/s | Z = %.2f | detector %.2f it/call | "
+      std::printf("%-44s %d thread(s): %.3g particle-steps/s | Z = %.2f | detector %.2f it/call, %.0f %% confirmed | "
                   "integration %.1f %%, broad phase %.1f %%, contacts (detection and laws) %.1f %%, reduction %.1f %%, "
                   "ghosts %.1f %%\n",
                   c.name, threads, median(rates), 2.0 * pairContacts / world.particles().size(),
                   calls > 0 ? (st.detectorIterations - statsBefore.detectorIterations) / calls : 0.0,
+                  calls > 0 ? 100.0 * (st.detectorConfirmations - statsBefore.detectorConfirmations) / calls : 0.0,
                   share(t.integration, before.integration), share(t.broadPhase, before.broadPhase),
                   share(t.contacts, before.contacts), share(t.reduction, before.reduction), share(t.ghosts, before.ghosts));
     }

@@ -54,12 +54,9 @@ Iterate<Surfaces> evaluate(const PairFrame& f, const Surfaces& surfaces, const V
   return it;
 }
 
-/// Sets B's tangent basis and it.J (the surfaces' Hessians first); it.finite becomes false if J is
-/// not finite.
+/// Sets B's tangent basis and it.J; it.finite becomes false if J is not finite.
 template <class Surfaces>
 void withJacobian(const Surfaces& surfaces, Iterate<Surfaces>& it) {
-  surfaces.addHessianOnA(it.a);
-  surfaces.addHessianOnB(it.b);
   const double L = it.lengthScale;
   const Vec3& nB = it.b.normal;
   const Vec3 u1 = it.t1 - nB * nB.dot(it.t1), u2 = it.t2 - nB * nB.dot(it.t2);
@@ -176,15 +173,14 @@ ContactGeometry finish(const PairFrame& f, const Surfaces& surfaces, const Pose&
   g.pointA = poseA.toWorld(g.localPointA);
   g.pointB = poseA.toWorld(it.b.point);
   g.normal = RA * it.a.normal;
-  g.localNormalA = it.a.normal;
-  g.localNormalB = f.R.transpose() * it.b.normal;
+  if (iterations == 0) {  // an answer a confirmation may keep (confirmContact)
+    g.localNormalA = it.a.normal;
+    g.localNormalB = f.R.transpose() * it.b.normal;
+  }
   g.overlap = -(it.b.point - it.a.point).dot(it.a.normal);
   if (curvatures) {
-    typename Surfaces::Point a = it.a, b = it.b;
-    surfaces.addHessianOnA(a);
-    surfaces.addHessianOnB(b);
-    g.curvatureA = surfaces.curvatures(a).rotated(RA);
-    g.curvatureB = surfaces.curvatures(b).rotated(RA);
+    g.curvatureA = surfaces.curvatures(it.a).rotated(RA);
+    g.curvatureB = surfaces.curvatures(it.b).rotated(RA);
   }
   g.iterations = iterations;
   g.residual = it.norm;
@@ -496,7 +492,7 @@ ContactGeometry solvePair(const PairFrame& f, const Pose& poseA, const DetectorS
 }
 
 /// The pair seen from A's body frame (one construction for the solve and confirmContact: the same bits).
-PairFrame pairFrame(const Superquadric& A, const Mat3& RA, const Superquadric& B, const Mat3& RB, const Vec3& centres) {
+[[gnu::always_inline]] inline PairFrame pairFrame(const Superquadric& A, const Mat3& RA, const Superquadric& B, const Mat3& RB, const Vec3& centres) {
   return {A, B, RA.transpose() * RB, RA.transpose() * centres, referenceVolumeRadius(A, B)};
 }
 

@@ -4,9 +4,8 @@
 // tangent vector u (H the gauge's Hessian; dotted with tangents, the Jacobian's curvature terms),
 // the radial projection onto each surface, and the principal curvatures of a solution. One
 // policy per shape-pair kind:
-//   SuperquadricSurfaces  general exponents: Superquadric::gradient for the residual, the
-//                         Hessians (Superquadric::derivatives) only for a Newton step or the
-//                         curvatures; B's rotated into A's frame
+//   SuperquadricSurfaces  general exponents: Superquadric::derivatives (Hessians formed), B's
+//                         rotated into A's frame
 //   EllipsoidSurfaces     n1 = n2 = 2: g(x) = sqrt((x - c)' Q (x - c)) with Q = R diag(1/a^2) R',
 //                         so grad g = Q (x - c) / g, H = (Q - grad grad') / g and on tangent
 //                         vectors (orthogonal to grad) t.S.u = t.Q.u / (g |grad g|): no power, no
@@ -38,18 +37,14 @@ class SuperquadricSurfaces {
   struct Point {
     Vec3 point, gradient, normal;
     double gradientNorm = 0.0;
-    double gauge = 0.0;  ///< g at the point (~1: on the surface)
-    Mat3 hessian;        ///< only after addHessianOn (a Newton step's Jacobian, the curvatures)
+    Mat3 hessian;
   };
   explicit SuperquadricSurfaces(const PairFrame& f) : f_(f) {}
 
-  /// A point's gradient and normal: what the residual needs (most warm evaluations take no step).
-  Point onA(const Vec3& p) const { return at(p, f_.A.gradient(p), Mat3::Identity(), false); }
-  Point onB(const Vec3& p) const { return at(p, f_.B.gradient(f_.toB(p)), f_.R, true); }
-  void addHessianOnA(Point& s) const { s.hessian = f_.A.hessian(s.point, s.gauge); }
-  void addHessianOnB(Point& s) const { s.hessian = Mat3(f_.R * f_.B.hessian(f_.toB(s.point), s.gauge) * f_.R.transpose()); }
+  Point onA(const Vec3& p) const { return at(p, f_.A.derivatives(p), Mat3::Identity(), false); }
+  Point onB(const Vec3& p) const { return at(p, f_.B.derivatives(f_.toB(p)), f_.R, true); }
   Vec3 shapeOperator(const Point& s, const Vec3& u) const { return s.hessian * u / s.gradientNorm; }
-  bool finite(const Point& s) const { return s.gradient.allFinite(); }
+  bool finite(const Point& s) const { return s.hessian.allFinite(); }
   Vec3 projectOnA(const Vec3& y) const { return f_.A.projectRadially(y); }
   Vec3 projectOnB(const Vec3& y) const { return f_.fromB(f_.B.projectRadially(f_.toB(y))); }
   PrincipalCurvatures curvatures(const Point& s) const { return principalCurvatures(s.gradient, s.hessian); }
@@ -58,7 +53,7 @@ class SuperquadricSurfaces {
   static Point at(const Vec3& p, const GaugeDerivatives& d, const Mat3& R, bool rotate) {
     const Vec3 g = rotate ? Vec3(R * d.gradient) : d.gradient;
     const double gn = g.norm();
-    return {p, g, g / gn, gn, d.value, Mat3::Zero()};
+    return {p, g, g / gn, gn, rotate ? Mat3(R * d.hessian * R.transpose()) : d.hessian};
   }
   const PairFrame& f_;
 };
@@ -78,8 +73,6 @@ class EllipsoidSurfaces {
 
   Point onA(const Vec3& p) const { return at(p, p, QA_); }
   Point onB(const Vec3& p) const { return at(p, p - c_, QB_); }
-  void addHessianOnA(Point&) const {}  // Q is the whole second-order information
-  void addHessianOnB(Point&) const {}
   Vec3 shapeOperator(const Point& s, const Vec3& u) const { return *s.Q * u / (s.gauge * s.gradientNorm); }
   bool finite(const Point& s) const { return std::isfinite(s.gauge) && s.gauge > 0.0; }
   Vec3 projectOnA(const Vec3& y) const { return y / std::sqrt(y.dot(QA_ * y)); }

@@ -4,7 +4,6 @@
 #include <boost/math/special_functions/beta.hpp>
 #include <cmath>
 #include <numbers>
-#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -146,28 +145,21 @@ double Superquadric::gauge(const Vec3& x) const {
   return pNorm(pNorm(u.x(), u.y(), n2_), u.z(), n1_);
 }
 
-namespace {
-
-/// g, its gradient and (with Hessian) its Hessian; the gradient is computed the same way with or
-/// without the Hessian, so both give it to the same bits. `known`: g(x) as computed before (its
-/// root not taken again; the nested gauge computes it anyway).
-template <bool Hessian>
-GaugeDerivatives differentiate(const Superquadric& s, const Vec3& x, std::optional<double> known = std::nullopt) {
-  const Vec3 u = x.cwiseQuotient(s.halfExtents());
-  const double n1 = s.n1(), n2 = s.n2();
+GaugeDerivatives Superquadric::derivatives(const Vec3& x) const {
+  const Vec3 u = x.cwiseQuotient(halfExtents_);
   GaugeDerivatives out;
   Vec3 gradU;
   Mat3 hessU;
-  if (s.isEllipsoid()) {
-    const double g = known ? *known : u.norm();
+  if (isEllipsoid()) {
+    const double g = u.norm();
     if (g == 0.0) return out;
     out.value = g;
     gradU = u / g;
-    if constexpr (Hessian) hessU = (Mat3::Identity() - gradU * gradU.transpose()) / g;
-  } else if (n1 == n2) {
+    hessU = (Mat3::Identity() - gradU * gradU.transpose()) / g;
+  } else if (n1_ == n2_) {
     // g = ||u||_p: with t_i = |u_i| / g, dg/du_i = sgn(u_i) t_i^(p-1) and
     // g d2g/du_i du_j = (p - 1) (delta_ij t_i^(p-2) - dg/du_i dg/du_j).
-    const double p = n1, g = known ? *known : pNorm3(u, p);
+    const double p = n1_, g = pNorm3(u, p);
     if (g == 0.0) return out;
     out.value = g;
     Vec3 curvature;  // t_i^(p-2)
@@ -176,41 +168,31 @@ GaugeDerivatives differentiate(const Superquadric& s, const Vec3& x, std::option
       curvature(i) = power(t, p - 2.0);
       gradU(i) = std::copysign(curvature(i) * t, u(i));
     }
-    if constexpr (Hessian) hessU = (p - 1.0) / g * (Mat3(curvature.asDiagonal()) - gradU * gradU.transpose());
+    hessU = (p - 1.0) / g * (Mat3(curvature.asDiagonal()) - gradU * gradU.transpose());
   } else {
-    const NormDerivatives in = pNormDerivatives(u.x(), u.y(), n2);     // s(u, v)
-    const NormDerivatives outer = pNormDerivatives(in.h, u.z(), n1);  // g(s, w)
+    const NormDerivatives in = pNormDerivatives(u.x(), u.y(), n2_);     // s(u, v)
+    const NormDerivatives outer = pNormDerivatives(in.h, u.z(), n1_);  // g(s, w)
     const double g = outer.h;
     if (g == 0.0) return out;
     out.value = g;
     gradU = Vec3(outer.du * in.du, outer.du * in.dv, outer.dv);
-    if constexpr (Hessian) {
-      // Chain rule g(s(u, v), w); every term carries 1/g, and g_s * s_ab = t_s^(n1-2) (s s_ab) / g.
-      const double sUU = outer.hUU * in.du * in.du + outer.powU * in.hUU;
-      const double sUV = outer.hUU * in.du * in.dv + outer.powU * in.hUV;
-      const double sVV = outer.hUU * in.dv * in.dv + outer.powU * in.hVV;
-      hessU << sUU, sUV, outer.hUV * in.du,  //
-          sUV, sVV, outer.hUV * in.dv,       //
-          outer.hUV * in.du, outer.hUV * in.dv, outer.hVV;
-      hessU /= g;
-    }
+    // Chain rule g(s(u, v), w); every term carries 1/g, and g_s * s_ab = t_s^(n1-2) (s s_ab) / g.
+    const double sUU = outer.hUU * in.du * in.du + outer.powU * in.hUU;
+    const double sUV = outer.hUU * in.du * in.dv + outer.powU * in.hUV;
+    const double sVV = outer.hUU * in.dv * in.dv + outer.powU * in.hVV;
+    hessU << sUU, sUV, outer.hUV * in.du,  //
+        sUV, sVV, outer.hUV * in.dv,       //
+        outer.hUV * in.du, outer.hUV * in.dv, outer.hVV;
+    hessU /= g;
   }
-  const Vec3 inv = s.halfExtents().cwiseInverse();
+  const Vec3 inv = halfExtents_.cwiseInverse();
   out.gradient = gradU.cwiseProduct(inv);
-  if constexpr (Hessian) out.hessian = inv.asDiagonal() * hessU * inv.asDiagonal();
+  out.hessian = inv.asDiagonal() * hessU * inv.asDiagonal();
   return out;
 }
 
-}  // namespace
-
-GaugeDerivatives Superquadric::derivatives(const Vec3& x) const { return differentiate<true>(*this, x); }
-
-GaugeDerivatives Superquadric::gradient(const Vec3& x) const { return differentiate<false>(*this, x); }
-
-Mat3 Superquadric::hessian(const Vec3& x, double value) const { return differentiate<true>(*this, x, value).hessian; }
-
 Vec3 Superquadric::outwardNormal(const Vec3& x) const {
-  return gradient(x).gradient.normalized();
+  return derivatives(x).gradient.normalized();
 }
 
 Vec3 Superquadric::supportPoint(const Vec3& direction) const {

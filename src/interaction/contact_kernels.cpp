@@ -40,7 +40,8 @@ template <PairKind Kind>
 
 /// The pair kind's detector for contact k, warm-started from the store; the curvatures only
 /// when asked for (a law that does not use them, or takes them from its cache, does not pay).
-/// A quiet pair's warm answer (its last solve took no Newton step) is confirmed from its kept
+/// A quiet pair's warm answer (its last solve took no Newton step, its residual within half the
+/// tolerance) is confirmed from its kept
 /// normals where it still holds (skip: the contact's record, null when not kept;
 /// warm_skip.hpp), counted in confirmations.
 template <PairKind Kind>
@@ -75,19 +76,21 @@ ContactGeometry detect(const InteractionScene& scene, const std::vector<double>&
     const Pose poseA = poseOf(p, a), poseB = poseOf(p, b);
     const bool warm = s.status[k] == ContactStatus::Converged && scene.detector.warmStart;
     const WarmStart previous{s.localA[k], s.localB[k], s.overlap[k]};
-    std::optional<ContactGeometry> confirmed;
+    ContactGeometry g;
+    bool confirmed = false;
     if (warm && skip != nullptr && skip->left > 0) {
-      confirmed = confirmContact(A, poseA, B, poseB, settings, previous, skip->normalA, skip->normalB);
+      if (const std::optional<ContactGeometry> c = confirmContact(A, poseA, B, poseB, settings, previous, skip->normalA, skip->normalB)) {
+        g = *c;
+        confirmed = true;
+      }
     }
-    const ContactGeometry g = confirmed ? *confirmed
-                              : warm    ? detectContact(A, poseA, B, poseB, settings, previous)
-                                        : detectContact(A, poseA, B, poseB, settings);
+    if (!confirmed) g = warm ? detectContact(A, poseA, B, poseB, settings, previous) : detectContact(A, poseA, B, poseB, settings);
     if (skip != nullptr) {
       if (confirmed) {
         --skip->left;
         ++confirmations;
-      } else if (g.converged() && g.iterations == 0) {  // a quiet pair: its warm start still solved it
-        skip->restart(g.localNormalA, g.localNormalB);
+      } else if (g.converged() && g.iterations == 0 && g.residual <= 0.5 * settings.tolerance * referenceVolumeRadius(A, B)) {
+        skip->restart(g.localNormalA, g.localNormalB);  // a quiet pair: its warm start solved it with room to spare
       } else {
         skip->unset();
       }

@@ -73,6 +73,14 @@ PolyData surfaceFrame(const World& world, const std::vector<int>& coordination, 
   d.points = float32("Points", 3);
   DataArray id = int64("id"), velocity = float32("velocity", 3), spin = float32("angular_velocity", 3),
             force = float32("force", 3), z = int32("coordination"), radius = float32("volume_radius", 1);
+  std::size_t points = 0, quads = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    points += shapes[p.shape[i]].points.size();
+    quads += shapes[p.shape[i]].quads.size();
+  }
+  for (DataArray* array : {&d.points, &id, &velocity, &spin, &force, &z, &radius}) array->reserve(points);
+  d.connectivity.reserve(4 * quads);
+  d.offsets.reserve(quads);
   for (std::size_t i = 0; i < p.size(); ++i) {
     const Tessellation& t = shapes[p.shape[i]];
     const auto first = static_cast<std::int64_t>(d.pointCount());

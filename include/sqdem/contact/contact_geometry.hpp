@@ -41,8 +41,8 @@ struct ContactGeometry {
   PrincipalCurvatures curvatureB;  ///< principal curvatures/directions of B at pointB (world)
   Vec3 localPointA = Vec3::Zero(); ///< pointA in A's body frame (warm-start data)
   Vec3 localPointB = Vec3::Zero(); ///< pointB in B's body frame (warm-start data)
-  /// The outward unit normals at localPointA and localPointB in their bodies' frames (set by the
-  /// pair solve, for confirmContact; zero otherwise)
+  /// The outward unit normals at localPointA and localPointB in their bodies' frames, for
+  /// confirmContact: set by the pair solve when it took no Newton step (zero otherwise)
   Vec3 localNormalA = Vec3::Zero(), localNormalB = Vec3::Zero();
   int iterations = 0;              ///< Newton iterations used (0 for closed forms and culls)
   double residual = 0.0;           ///< final residual of the common-normal equations (m)

@@ -63,11 +63,6 @@ class Superquadric {
   double implicitFunction(const Vec3& x) const { return gauge(x) - 1.0; }
   /// g, grad g and Hessian of g at x (x != 0).
   GaugeDerivatives derivatives(const Vec3& x) const;
-  /// g and grad g at x (x != 0), the Hessian left zero: the same bits as derivatives() for less.
-  GaugeDerivatives gradient(const Vec3& x) const;
-  /// The Hessian at x given value = g(x) as gradient(x) returned it: derivatives(x).hessian to
-  /// the same bits without computing g again.
-  Mat3 hessian(const Vec3& x, double value) const;
   /// Outward unit normal at (or radially through) x.
   Vec3 outwardNormal(const Vec3& x) const;
   /// Radial projection x / g(x) of x != 0 onto the surface.

@@ -7,8 +7,9 @@
 // B's in B's, so with both normals kept from the last evaluation confirmContact (detector.hpp)
 // computes the residual from the new relative pose alone and, where it is within the tolerance,
 // returns the warm solve's answer to the same bits. This is each contact's record of the normals,
-// kept for quiet pairs only (their last solve took no Newton step: a pair that moves faster than
-// the tolerance a step would fail the confirmation and pay it on top of its solve).
+// kept for quiet pairs only (their last solve took no Newton step and left the residual within half
+// the tolerance: a pair that moves by about the tolerance a step would fail the confirmation and
+// pay it on top of its solve).
 
 #include <cstdint>
 
@@ -26,7 +27,7 @@ struct WarmSkip {
   Vec3 normalB = Vec3::Zero();  ///< B's, B's body frame
   std::uint32_t left = 0;       ///< confirmations allowed before an evaluation; 0: none kept
 
-  /// After an evaluated answer that took no Newton step.
+  /// After an evaluated answer of a quiet pair.
   void restart(const Vec3& localNormalA, const Vec3& localNormalB) { *this = {localNormalA, localNormalB, mostInARow}; }
   void unset() { left = 0; }
 };

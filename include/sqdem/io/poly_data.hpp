@@ -20,8 +20,16 @@ struct DataArray {
 
   /// Appends a tuple of Vec3 (components 3) or one number (components 1), converted to the
   /// array's type.
-  void push(const Vec3& v) { std::visit([&](auto& a) { a.insert(a.end(), {cast(a, v.x()), cast(a, v.y()), cast(a, v.z())}); }, values); }
+  void push(const Vec3& v) {
+    std::visit([&](auto& a) {
+      a.push_back(cast(a, v.x()));
+      a.push_back(cast(a, v.y()));
+      a.push_back(cast(a, v.z()));
+    }, values);
+  }
   void push(double x) { std::visit([&](auto& a) { a.push_back(cast(a, x)); }, values); }
+  /// Room for `tuples` tuples (a frame of 10^5 surfaces: no re-allocation while it is filled).
+  void reserve(std::size_t tuples) { std::visit([&](auto& a) { a.reserve(tuples * components); }, values); }
 
  private:
   template <typename Vector>
