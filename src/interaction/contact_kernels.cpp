@@ -312,7 +312,11 @@ void Interactions::compute(const InteractionScene& scene, std::vector<double>& s
   const auto n = static_cast<std::ptrdiff_t>(p.slots());  // ghosts too
   // Only the iterative kinds cull separated pairs by the particles' speed bounds.
   const bool bounded = std::ranges::any_of(groups_, [](const Group& g) { return !round(g.kind) && !withWall(g.kind); });
-  std::vector<detail::WarmSkip>* skips = scene.detector.confirmWarm ? &warmSkips_ : nullptr;
+  // Records only where pairs are solved (round kinds and walls keep none): made after every
+  // change of the store (storeChanged empties them), so a record is always its slot's.
+  const bool recording = bounded && scene.detector.confirmWarm;
+  if (recording && warmSkips_.size() != store_.size()) warmSkips_.assign(store_.size(), {});
+  std::vector<detail::WarmSkip>* skips = recording ? &warmSkips_ : nullptr;
   // One parallel region per computation: the groups' loops do not wait for each other (each
   // writes only its own contacts), so a step pays one fork and one join here.
 #pragma omp parallel

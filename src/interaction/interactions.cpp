@@ -85,7 +85,7 @@ void Interactions::setRemoteContacts(const std::vector<RemoteContact>& contacts,
 }
 
 void Interactions::storeChanged() {
-  warmSkips_.assign(store_.size(), {});
+  warmSkips_.clear();  // made afresh by the next computation that keeps records
   interactingListed_ = false;
   keyOrder_.resize(store_.size());
   std::iota(keyOrder_.begin(), keyOrder_.end(), 0u);

@@ -187,7 +187,8 @@ class Interactions {
     std::vector<std::uint32_t> members;  ///< contact indices, ascending
   };
   void regroup(const InteractionScene& scene);
-  /// After the store's slots changed: keyOrder_ from its keys, the skip records unset.
+  /// After the store's slots changed: keyOrder_ and the wall contacts from its keys, the skip
+  /// records dropped.
   void storeChanged();
   void indexInvolvement(std::size_t owned, const std::vector<std::uint32_t>& ghostOwner);
   /// interacting_, made from the acting flags in key order if the store changed since.
@@ -209,7 +210,7 @@ class Interactions {
   std::vector<std::uint32_t> wallContacts_;      ///< the contacts with a wall, in key order
   mutable std::vector<std::uint32_t> interacting_;  ///< the force-carrying contacts, in key order (listActing)
   mutable bool interactingListed_ = false;
-  std::vector<detail::WarmSkip> warmSkips_;      ///< by store slot (warm_skip.hpp)
+  std::vector<detail::WarmSkip> warmSkips_;      ///< by store slot (warm_skip.hpp); empty without particle pairs to solve
 };
 
 }  // namespace sqdem
