@@ -161,23 +161,31 @@ PrincipalCurvatures curvaturesAt(const Superquadric& s, const Pose& pose, const 
   return principalCurvatures(d.gradient, d.hessian).rotated(pose.rotation());
 }
 
+/// The answer at surface points pA, pB (A's body frame) with A's normal nA there, in world frame:
+/// what finish() and confirmContact both return (one packing, the same bits).
+ContactGeometry atPoints(const PairFrame& f, const Pose& poseA, const Mat3& RA, const Vec3& pA, const Vec3& pB,
+                         const Vec3& nA) {
+  ContactGeometry g;
+  g.localPointA = pA;
+  g.localPointB = f.toB(pB);
+  g.pointA = poseA.toWorld(pA);
+  g.pointB = poseA.toWorld(pB);
+  g.normal = RA * nA;
+  g.overlap = -(pB - pA).dot(nA);
+  return g;
+}
+
 /// Packs a solved pair (points in A's body frame) into world-frame ContactGeometry.
 template <class Surfaces>
 ContactGeometry finish(const PairFrame& f, const Surfaces& surfaces, const Pose& poseA, const Iterate<Surfaces>& it,
                        ContactStatus status, int iterations, bool curvatures) {
-  ContactGeometry g;
-  g.status = status;
   const Mat3 RA = poseA.rotation();
-  g.localPointA = it.a.point;
-  g.localPointB = f.toB(it.b.point);
-  g.pointA = poseA.toWorld(g.localPointA);
-  g.pointB = poseA.toWorld(it.b.point);
-  g.normal = RA * it.a.normal;
+  ContactGeometry g = atPoints(f, poseA, RA, it.a.point, it.b.point, it.a.normal);
+  g.status = status;
   if (iterations == 0) {  // an answer a confirmation may keep (confirmContact)
     g.localNormalA = it.a.normal;
     g.localNormalB = f.R.transpose() * it.b.normal;
   }
-  g.overlap = -(it.b.point - it.a.point).dot(it.a.normal);
   if (curvatures) {
     g.curvatureA = surfaces.curvatures(it.a).rotated(RA);
     g.curvatureB = surfaces.curvatures(it.b).rotated(RA);
@@ -491,7 +499,7 @@ ContactGeometry solvePair(const PairFrame& f, const Pose& poseA, const DetectorS
   return coldSolve(f, surfaces, poseA, distance > 0.0 ? Vec3(f.c / distance) : Vec3::UnitX(), 0, settings, nullptr);
 }
 
-/// The pair seen from A's body frame (one construction for the solve and confirmContact: the same bits).
+/// The pair seen from A's body frame (one construction for the solve and confirmContact).
 [[gnu::always_inline]] inline PairFrame pairFrame(const Superquadric& A, const Mat3& RA, const Superquadric& B, const Mat3& RB, const Vec3& centres) {
   return {A, B, RA.transpose() * RB, RA.transpose() * centres, referenceVolumeRadius(A, B)};
 }
@@ -538,32 +546,31 @@ ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const Su
 std::optional<ContactGeometry> confirmContact(const Superquadric& A, const Pose& poseA, const Superquadric& B,
                                               const Pose& poseB, const DetectorSettings& settings,
                                               const WarmStart& previous, const Vec3& normalA, const Vec3& normalB) {
+  if ((A.isSphere() && B.isSphere()) || settings.curvatures) return std::nullopt;  // solve()'s closed form; no curvatures here
   const Mat3 RA = poseA.rotation(), RB = poseB.rotation();
   const PairFrame f = pairFrame(A, RA, B, RB, poseB.position - poseA.position);
   // evaluate() at the warm start's points, in A's frame, with the kept normals: |r|^2 is the
   // tangential part (to nA) of L (nA + nB) and of pB - pA, whatever the tangent basis.
   const Vec3& pA = previous.localPointA;
-  const Vec3 pB = f.fromB(previous.localPointB);
+  const Vec3 pB = f.fromB(previous.localPointB), nB = f.R * normalB;
   const auto tangential = [&](const Vec3& v) { return Vec3(v - v.dot(normalA) * normalA); };
-  const Vec3 normalSum = tangential(normalA + f.R * normalB), gap = tangential(pB - pA);
+  const Vec3 normalSum = tangential(normalA + nB), gap = tangential(pB - pA);
   const double residual = std::sqrt(f.lengthScale * f.lengthScale * normalSum.squaredNorm() + gap.squaredNorm());
-  if (!(residual <= (1.0 - 1e-3) * settings.tolerance * f.lengthScale)) return std::nullopt;
+  // The margin covers kept against evaluated normals (round-off, and B's point re-expressed in each
+  // new frame since: WarmSkip::mostInARow), which does not shrink with the tolerance: 1e-11 L.
+  const double margin = std::max(1e-3 * settings.tolerance, 1e-11) * f.lengthScale;
+  if (!(residual <= settings.tolerance * f.lengthScale - margin)) return std::nullopt;
   if (culled(A, poseA, RA, B, poseB, RB, settings, &previous)) return std::nullopt;  // solve() returns the cull's answer
-  // finish() of that first iterate, which newtonSolve returns.
-  ContactGeometry g;
+  // finish() of that first iterate, as newtonSolve returns it after its checks (antiparallel
+  // normals, facing B, within the cut-off) and solvePair's continuation.
+  ContactGeometry g = atPoints(f, poseA, RA, pA, pB, normalA);
   g.status = ContactStatus::Converged;
-  g.localPointA = pA;
-  g.localPointB = f.toB(pB);
-  g.pointA = poseA.toWorld(pA);
-  g.pointB = poseA.toWorld(pB);
-  g.normal = RA * normalA;
   g.localNormalA = normalA;
   g.localNormalB = normalB;
-  g.overlap = -(pB - pA).dot(normalA);
   g.residual = residual;
-  // newtonSolve's checks (the normals are antiparallel: nB = -nA to the tolerance) and solvePair's
-  // continuation.
-  if (!(normalA.dot(f.c) >= 0.0) || -g.overlap > settings.cutoff || !continues(f, g, &previous)) return std::nullopt;
+  if (!(normalA.dot(nB) < 0.0) || !(normalA.dot(f.c) >= 0.0) || -g.overlap > settings.cutoff || !continues(f, g, &previous)) {
+    return std::nullopt;
+  }
   return g;
 }
 

@@ -2,8 +2,8 @@
 // over a group's contacts with the law fixed for the whole loop.
 
 #include <algorithm>
-#include <optional>
 #include <cmath>
+#include <optional>
 #include <variant>
 
 #include "contact_force.hpp"
@@ -44,8 +44,7 @@ template <PairKind Kind>
 
 /// The pair kind's detector for contact k, warm-started from the store; the curvatures only
 /// when asked for (a law that does not use them, or takes them from its cache, does not pay).
-/// A quiet pair's warm answer (its last solve took no Newton step, its residual within half the
-/// tolerance) is confirmed from its kept
+/// A quiet pair's warm answer (WarmSkip::quiet) is confirmed from its kept
 /// normals where it still holds (skip: the contact's record, null when not kept;
 /// warm_skip.hpp), counted in confirmations.
 template <PairKind Kind>
@@ -82,7 +81,7 @@ ContactGeometry detect(const InteractionScene& scene, const std::vector<double>&
     const WarmStart previous{s.localA[k], s.localB[k], s.overlap[k]};
     ContactGeometry g;
     bool confirmed = false;
-    if (warm && skip != nullptr && skip->left > 0) {
+    if (warm && skip != nullptr && skip->left > 0 && !curvatures) {
       if (const std::optional<ContactGeometry> c = confirmContact(A, poseA, B, poseB, settings, previous, skip->normalA, skip->normalB)) {
         g = *c;
         confirmed = true;
@@ -93,8 +92,8 @@ ContactGeometry detect(const InteractionScene& scene, const std::vector<double>&
       if (confirmed) {
         --skip->left;
         ++confirmations;
-      } else if (g.converged() && g.iterations == 0 && g.residual <= 0.5 * settings.tolerance * referenceVolumeRadius(A, B)) {
-        skip->restart(g.localNormalA, g.localNormalB);  // a quiet pair: its warm start solved it with room to spare
+      } else if (detail::WarmSkip::quiet(g, settings.tolerance * referenceVolumeRadius(A, B))) {
+        skip->restart(g.localNormalA, g.localNormalB);
       } else {
         skip->unset();
       }
@@ -195,8 +194,7 @@ void groupKernel(const std::vector<std::uint32_t>& members, const ContactModel& 
         return detectRound<Kind>(scene, s, k);
       } else {
         const bool curvatures = model.usesCurvatures() && !cached;
-        return detect<Kind>(scene, speedBound, model, s, k, curvatures, skips != nullptr && !curvatures ? &(*skips)[k] : nullptr,
-                            confirmations);
+        return detect<Kind>(scene, speedBound, model, s, k, curvatures, skips != nullptr ? &(*skips)[k] : nullptr, confirmations);
       }
     }();
     s.status[k] = g.status;
@@ -315,7 +313,9 @@ void Interactions::compute(const InteractionScene& scene, std::vector<double>& s
   // Records only where pairs are solved (round kinds and walls keep none): made after every
   // change of the store (storeChanged empties them), so a record is always its slot's.
   const bool recording = bounded && scene.detector.confirmWarm;
+  if (!recording) warmSkips_.clear();  // none kept while not recording, so none goes stale
   if (recording && warmSkips_.size() != store_.size()) warmSkips_.assign(store_.size(), {});
+  interactingListed_ = false;  // the acting flags are written now
   std::vector<detail::WarmSkip>* skips = recording ? &warmSkips_ : nullptr;
   // One parallel region per computation: the groups' loops do not wait for each other (each
   // writes only its own contacts), so a step pays one fork and one join here.

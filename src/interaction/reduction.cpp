@@ -49,7 +49,6 @@ void Interactions::reduce(ParticleStore& p, const Vec3& gravity, double drag, co
   }
   // The walls' shares, in key order.
   wallLoads.assign(walls.size(), WallLoadSum{});
-  interactingListed_ = false;
   for (const std::uint32_t k : wallContacts_) {
     if (!s.acting[k]) continue;
     const std::uint32_t w = s.b[k] & ~wallFlag;

@@ -97,14 +97,14 @@ ContactGeometry detectContact(const Superquadric& A, const Pose& poseA, const Su
                               const Pose& poseB, const DetectorSettings& settings, const WarmStart& previous);
 
 /// A warm answer confirmed without evaluating a surface: previous is the pair's last converged
-/// answer and normalA, normalB the outward normals there in A's and B's
-/// body frames (ContactGeometry::localNormalA, localNormalB). The residual is computed from the
-/// new relative pose; where it is within (1 - 1e-3) of the tolerance (the margin covers the
-/// round-off of kept against evaluated normals) and the warm solve would keep the answer (its
-/// normal faces B, the overlap did not jump, the pair is within the cut-off and passes the culls
-/// of a pair that was apart), the result is the
-/// warm solve's answer to the same bits (its residual to round-off); otherwise nullopt: solve. Needs no
-/// curvatures (settings.curvatures is not honoured).
+/// answer and normalA, normalB the outward normals there in A's and B's body frames
+/// (ContactGeometry::localNormalA, localNormalB). The residual is computed from the new relative
+/// pose; where it is within the tolerance less a margin (1e-3 of it, at least 1e-11 L: kept and
+/// evaluated normals differ by round-off) and the warm solve would keep the answer (antiparallel
+/// normals, A's facing B, the overlap not jumped, within the cut-off, past the culls of a pair
+/// that was apart), the result is the warm solve's answer to the same bits (its residual and B's
+/// normal to round-off); otherwise nullopt: solve. Never for two spheres (solved in closed form)
+/// or when curvatures are asked for.
 std::optional<ContactGeometry> confirmContact(const Superquadric& A, const Pose& poseA, const Superquadric& B,
                                               const Pose& poseB, const DetectorSettings& settings,
                                               const WarmStart& previous, const Vec3& normalA, const Vec3& normalB);

@@ -159,7 +159,7 @@ class Interactions {
   LoadOnB loadOnB(std::uint32_t k, const ParticleStore& particles) const;
 
   /// The contacts that carried force in the last computation, in key order (listed when first
-  /// asked for after a computation: the steps need no list).
+  /// asked for after a computation: the steps need no list; not to be called from two threads).
   auto acting() const {
     return listActing() | std::views::transform([this](std::uint32_t k) { return ContactView(store_, k); });
   }

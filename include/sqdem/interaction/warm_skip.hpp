@@ -13,6 +13,7 @@
 
 #include <cstdint>
 
+#include "sqdem/contact/contact_geometry.hpp"
 #include "sqdem/math/types.hpp"
 
 namespace sqdem::detail {
@@ -20,8 +21,15 @@ namespace sqdem::detail {
 struct WarmSkip {
   /// Confirmations in a row before the next evaluation: each re-expresses B's point in the new
   /// relative frame (the warm solve's round trip, ~1e-16 of its size a step) while the kept B
-  /// normal stays that of the evaluated point; evaluating every so often keeps the two together.
-  static constexpr std::uint32_t mostInARow = 64;
+  /// normal stays that of the evaluated point; evaluating every so often keeps the two within
+  /// confirmContact's margin (16 round trips of a 1e-3 m body: ~1e-17 m).
+  static constexpr std::uint32_t mostInARow = 16;
+
+  /// Whether an evaluated answer is kept: its warm start solved it without a Newton step, with
+  /// the residual within half the tolerance (m), so the next step's confirmation will likely pass.
+  static bool quiet(const ContactGeometry& g, double tolerance) {
+    return g.converged() && g.iterations == 0 && g.residual <= 0.5 * tolerance;
+  }
 
   Vec3 normalA = Vec3::Zero();  ///< A's outward normal at the pair's point, A's body frame
   Vec3 normalB = Vec3::Zero();  ///< B's, B's body frame
