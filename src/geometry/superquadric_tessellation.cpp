@@ -4,22 +4,23 @@
 #include <numbers>
 #include <stdexcept>
 #include <unordered_map>
+#include <utility>
 
 namespace sqdem {
 
-Tessellation tessellate(const Superquadric& shape, int resolution) {
+SurfaceGrid surfaceGrid(int resolution) {
   if (resolution < 1) throw std::invalid_argument("tessellate: resolution must be >= 1");
   const int N = resolution;
-  Tessellation t;
+  SurfaceGrid t;
   // A cube vertex by its integer grid coordinates (i, j, k) in [0, N]^3, shared between faces.
   std::unordered_map<long, std::uint32_t> index;
   const auto vertex = [&](int i, int j, int k) {
     const long key = (static_cast<long>(i) * (N + 1) + j) * (N + 1) + k;
-    const auto [at, added] = index.try_emplace(key, static_cast<std::uint32_t>(t.points.size()));
+    const auto [at, added] = index.try_emplace(key, static_cast<std::uint32_t>(t.angles.size()));
     if (added) {
       const auto angle = [N](int m) { return std::tan(0.25 * std::numbers::pi * (2.0 * m / N - 1.0)); };
       const Vec3 d = Vec3(angle(i), angle(j), angle(k)).normalized();  // the grid's outer coordinate is tan(+-pi/4) = +-1
-      t.points.push_back(shape.surfacePoint(std::asin(d.z()), std::atan2(d.y(), d.x())));
+      t.angles.push_back({std::asin(d.z()), std::atan2(d.y(), d.x())});
     }
     return at->second;
   };
@@ -44,6 +45,14 @@ Tessellation tessellate(const Superquadric& shape, int resolution) {
       }
     }
   }
+  return t;
+}
+
+Tessellation tessellate(const Superquadric& shape, int resolution) {
+  SurfaceGrid grid = surfaceGrid(resolution);
+  Tessellation t{{}, std::move(grid.quads)};
+  t.points.reserve(grid.angles.size());
+  for (const auto& [eta, omega] : grid.angles) t.points.push_back(shape.surfacePoint(eta, omega));
   return t;
 }
 

@@ -63,39 +63,39 @@ PolyData particleFrame(const World& world, const std::vector<int>& coordination)
   return d;
 }
 
-/// Every particle's surface in its pose, its values copied to its vertices.
+/// Every particle's surface in its pose, its values copied to its vertices. A shape's vertices are
+/// drawn once for a run of particles of equal shapes (a fixed family: once for all of them).
 PolyData surfaceFrame(const World& world, const std::vector<int>& coordination, int resolution) {
   const ParticleStore& p = world.particles();
-  std::vector<Tessellation> shapes;  // one per shape, in the body frame
-  for (const Superquadric& s : world.shapes()) shapes.push_back(tessellate(s, resolution));
+  const SurfaceGrid grid = surfaceGrid(resolution);
   PolyData d;
   d.cells = PolyData::Cells::Polygons;
   d.points = float32("Points", 3);
   DataArray id = int64("id"), velocity = float32("velocity", 3), spin = float32("angular_velocity", 3),
             force = float32("force", 3), z = int32("coordination"), radius = float32("volume_radius", 1);
-  std::size_t points = 0, quads = 0;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    points += shapes[p.shape[i]].points.size();
-    quads += shapes[p.shape[i]].quads.size();
-  }
+  const std::size_t points = p.size() * grid.angles.size(), quads = p.size() * grid.quads.size();
   for (DataArray* array : {&d.points, &id, &velocity, &spin, &force, &z, &radius}) array->reserve(points);
   d.connectivity.reserve(4 * quads);
   d.offsets.reserve(quads);
+  std::vector<Vec3> body;  // the vertices of `drawn` in its body frame
+  const Superquadric* drawn = nullptr;
   for (std::size_t i = 0; i < p.size(); ++i) {
-    const Tessellation& t = shapes[p.shape[i]];
+    const Superquadric& shape = world.shapes()[p.shape[i]];
+    if (drawn == nullptr || shape.halfExtents() != drawn->halfExtents() || shape.n1() != drawn->n1() || shape.n2() != drawn->n2()) {
+      body.clear();
+      for (const auto& [eta, omega] : grid.angles) body.push_back(shape.surfacePoint(eta, omega));
+      drawn = &shape;
+    }
     const auto first = static_cast<std::int64_t>(d.pointCount());
     const Pose pose{p.position[i], p.orientation[i]};
-    const double r = world.shapes()[p.shape[i]].volumeEquivalentRadius();
-    for (const Vec3& x : t.points) {
-      d.points.push(pose.toWorld(x));
-      id.push(static_cast<double>(p.id[i]));
-      velocity.push(p.velocity[i]);
-      spin.push(p.angularVelocity[i]);
-      force.push(p.force[i]);
-      z.push(coordination[i]);
-      radius.push(r);
-    }
-    for (const auto& quad : t.quads) {
+    for (const Vec3& x : body) d.points.push(pose.toWorld(x));
+    id.push(static_cast<double>(p.id[i]), body.size());
+    velocity.push(p.velocity[i], body.size());
+    spin.push(p.angularVelocity[i], body.size());
+    force.push(p.force[i], body.size());
+    z.push(coordination[i], body.size());
+    radius.push(shape.volumeEquivalentRadius(), body.size());
+    for (const auto& quad : grid.quads) {
       for (const std::uint32_t v : quad) d.connectivity.push_back(first + v);
       d.endCell();
     }
@@ -184,7 +184,7 @@ void VtkSeries::write(Series& series, double time, const PolyData& frame, const 
   if (ranks.size() > 1) {
     writeVtkPiece(frame, directory_ / file, ranks.rank(), ranks.size());
   } else if (ranks.rank() == 0) {
-    writeFileAtomically(directory_ / file, vtkXml(frame));
+    writeVtp(frame, directory_ / file);
   }
   if (ranks.rank() != 0) return;
   // The collection, by hand: VTK has no .pvd writer outside ParaView.

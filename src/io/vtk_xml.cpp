@@ -16,9 +16,16 @@
 #include <vtkXMLPolyDataWriter.h>
 
 #include <stdexcept>
+#include <type_traits>
+
+#include "sqdem/archive/atomic_file.hpp"
 
 namespace sqdem {
 namespace {
+
+/// Bytes compressed at a time. zlib sets up its state (a quarter of a megabyte, allocated and
+/// cleared) for every block: at VTK's default of 32 KiB that took a third of a frame's write time.
+constexpr std::size_t blockSize = std::size_t{1} << 20;
 
 template <typename T> struct VtkArrayOf;
 template <> struct VtkArrayOf<double> { using type = vtkDoubleArray; };
@@ -26,15 +33,19 @@ template <> struct VtkArrayOf<float> { using type = vtkFloatArray; };
 template <> struct VtkArrayOf<std::int64_t> { using type = vtkTypeInt64Array; };
 template <> struct VtkArrayOf<std::int32_t> { using type = vtkIntArray; };
 
+/// The array read in place (VTK's SetArray with save = 1: neither copied nor freed; a writer only
+/// reads it): a frame of 10^5 surfaces holds 10^7 values per array.
 vtkSmartPointer<vtkDataArray> toVtk(const DataArray& array) {
   return std::visit(
       [&](const auto& values) -> vtkSmartPointer<vtkDataArray> {
         using Value = typename std::decay_t<decltype(values)>::value_type;
-        auto out = vtkSmartPointer<typename VtkArrayOf<Value>::type>::New();
+        using Array = typename VtkArrayOf<Value>::type;
+        using Stored = typename Array::ValueType;  // vtkTypeInt64 is long long, std::int64_t long
+        static_assert(sizeof(Stored) == sizeof(Value) && std::is_integral_v<Stored> == std::is_integral_v<Value>);
+        auto out = vtkSmartPointer<Array>::New();
         out->SetName(array.name.c_str());
         out->SetNumberOfComponents(array.components);
-        out->SetNumberOfTuples(static_cast<vtkIdType>(values.size() / array.components));
-        std::copy(values.begin(), values.end(), out->GetPointer(0));
+        out->SetArray(reinterpret_cast<Stored*>(const_cast<Value*>(values.data())), static_cast<vtkIdType>(values.size()), 1);
         return out;
       },
       array.values);
@@ -83,18 +94,20 @@ void encode(Writer& writer) {
   writer.EncodeAppendedDataOff();
   writer.SetCompressorTypeToZLib();
   writer.SetCompressionLevel(1);
+  writer.SetBlockSize(blockSize);
   writer.SetHeaderTypeToUInt64();
 }
 
 }  // namespace
 
-std::string vtkXml(const PolyData& data) {
-  vtkNew<vtkXMLPolyDataWriter> writer;
-  writer->SetInputData(toVtk(data));
-  encode(*writer);
-  writer->WriteToOutputStringOn();
-  if (writer->Write() != 1) throw std::runtime_error("VTK could not write a .vtp frame");
-  return writer->GetOutputString();
+void writeVtp(const PolyData& data, const std::filesystem::path& file) {
+  writeFileAtomically(file, [&](const std::filesystem::path& temporary) {
+    vtkNew<vtkXMLPolyDataWriter> writer;
+    writer->SetInputData(toVtk(data));
+    encode(*writer);
+    writer->SetFileName(temporary.string().c_str());
+    if (writer->Write() != 1) throw std::runtime_error("VTK could not write '" + file.string() + "'");
+  });
 }
 
 void writeVtkPiece(const PolyData& data, const std::filesystem::path& summary, int piece, int pieces) {

@@ -15,10 +15,20 @@
 
 namespace sqdem {
 
+/// The part of a tessellation every shape shares at one resolution: the vertices' latitude and
+/// longitude (rad) in the parametrisation, and the quads.
+struct SurfaceGrid {
+  std::vector<std::array<double, 2>> angles;  ///< eta, omega per vertex
+  std::vector<std::array<std::uint32_t, 4>> quads;
+};
+
 struct Tessellation {
   std::vector<Vec3> points;   ///< on the surface, body frame (m)
   std::vector<std::array<std::uint32_t, 4>> quads;
 };
+
+/// N = resolution >= 1 quads along each cube edge.
+SurfaceGrid surfaceGrid(int resolution);
 
 /// N = resolution >= 1 quads along each cube edge.
 Tessellation tessellate(const Superquadric& shape, int resolution);

@@ -3,6 +3,7 @@
 // engine's output does not include them: points, one kind of cell (vertices, lines or polygons)
 // and named arrays on the points and on the cells. vtk_xml.hpp writes it as a .vtp file.
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <variant>
@@ -18,16 +19,15 @@ struct DataArray {
   int components = 1;
   std::variant<std::vector<double>, std::vector<float>, std::vector<std::int64_t>, std::vector<std::int32_t>> values;
 
-  /// Appends a tuple of Vec3 (components 3) or one number (components 1), converted to the
-  /// array's type.
-  void push(const Vec3& v) {
+  /// Appends `times` tuples of Vec3 (components 3) or of one number (components 1), converted to
+  /// the array's type.
+  void push(const Vec3& v, std::size_t times = 1) {
     std::visit([&](auto& a) {
-      a.push_back(cast(a, v.x()));
-      a.push_back(cast(a, v.y()));
-      a.push_back(cast(a, v.z()));
+      const std::array tuple{cast(a, v.x()), cast(a, v.y()), cast(a, v.z())};
+      for (std::size_t k = 0; k < times; ++k) a.insert(a.end(), tuple.begin(), tuple.end());
     }, values);
   }
-  void push(double x) { std::visit([&](auto& a) { a.push_back(cast(a, x)); }, values); }
+  void push(double x, std::size_t times = 1) { std::visit([&](auto& a) { a.insert(a.end(), times, cast(a, x)); }, values); }
   /// Room for `tuples` tuples (a frame of 10^5 surfaces: no re-allocation while it is filled).
   void reserve(std::size_t tuples) { std::visit([&](auto& a) { a.reserve(tuples * components); }, values); }
 

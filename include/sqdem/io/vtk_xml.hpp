@@ -1,17 +1,17 @@
 #pragma once
-// A PolyData (poly_data.hpp) as the text of a VTK XML .vtp file, written by VTK's
+// A PolyData (poly_data.hpp) as a VTK XML .vtp file, written (atomically) by VTK's
 // vtkXMLPolyDataWriter: appended raw binary data, zlib-compressed; across ranks a piece per rank
 // and a .pvtp, by vtkXMLPPolyDataWriter. Own target (sqdem_vtk_io):
 // VTK's headers stay in vtk_xml.cpp.
 
 #include <filesystem>
-#include <string>
 
 #include "sqdem/io/poly_data.hpp"
 
 namespace sqdem {
 
-std::string vtkXml(const PolyData& data);
+/// Throws std::runtime_error naming the file.
+void writeVtp(const PolyData& data, const std::filesystem::path& file);
 
 /// Piece `piece` of `pieces` of a frame (a rank's share), written with the same encoding by VTK's
 /// parallel writer (vtkXMLPPolyDataWriter) as `<stem>_<piece>.vtp` beside `summary`, the .pvtp
