@@ -8,7 +8,7 @@ namespace {
 
 /// Contact k's load on B as a torque about centre: its force's moment and the pure moment (B's torque
 /// about its centre; A's, about its own, with the sign reversed).
-Vec3 torqueAbout(const ContactStore& s, std::uint32_t k, const Vec3& centre) {
+[[gnu::always_inline]] inline Vec3 torqueAbout(const ContactStore& s, std::uint32_t k, const Vec3& centre) {
   return (s.point[k] - centre).cross(s.force[k]) + (s.withRolling ? s.moment[k] : Vec3::Zero());
 }
 
@@ -25,27 +25,30 @@ void Interactions::reduce(ParticleStore& p, const Vec3& gravity, double drag, co
   const auto n = static_cast<std::ptrdiff_t>(p.size());
 #pragma omp parallel for schedule(static)
   for (std::ptrdiff_t i = 0; i < n; ++i) {
-    p.force[i] = p.mass[i] * (gravity - drag * p.velocity[i]);
-    p.torque[i].setZero();
+    // Summed in registers (the stores' arrays might alias for the compiler), in the same order.
+    Vec3 force = p.mass[i] * (gravity - drag * p.velocity[i]);
+    Vec3 torque = Vec3::Zero();
     for (std::uint32_t m = involvementStart_[i]; m < involvementStart_[i + 1]; ++m) {
       if ((involvement_[m] & remoteFlag) != 0) {  // computed where its A is owned (loadOnB)
         const LoadOnB& load = remote[involvement_[m] & contactMask];
         if (!load.acting) continue;
-        p.force[i] += load.force;
-        p.torque[i] += load.torque;
+        force += load.force;
+        torque += load.torque;
         continue;
       }
       const std::uint32_t k = involvement_[m] & contactMask;
       if (!s.acting[k]) continue;
       if ((involvement_[m] & bodyBFlag) == 0) {  // i is body A
-        p.force[i] -= s.force[k];
-        p.torque[i] -= torqueAbout(s, k, p.position[i]);
+        force -= s.force[k];
+        torque -= torqueAbout(s, k, p.position[i]);
       } else {
-        p.force[i] += s.force[k];
+        force += s.force[k];
         const Vec3& centre = (involvement_[m] & imageFlag) != 0 ? p.position[s.b[k]] : p.position[i];  // i's image
-        p.torque[i] += torqueAbout(s, k, centre);
+        torque += torqueAbout(s, k, centre);
       }
     }
+    p.force[i] = force;
+    p.torque[i] = torque;
   }
   // The walls' shares, in key order.
   wallLoads.assign(walls.size(), WallLoadSum{});
