@@ -1,10 +1,12 @@
 // Rigid-body integration (dynamics/integrator.hpp): NO_SQUISH on a free asymmetric top
 // (Miller et al. 2002): bounded energy error, conserved world angular momentum, unit
-// quaternions, and the intermediate-axis (Dzhanibekov) flip; velocity Verlet on a free fall.
+// quaternions, and the intermediate-axis (Dzhanibekov) flip; velocity Verlet on a free fall; a
+// sphere that does not turn.
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
 
 #include "sqdem/dynamics/integrator.hpp"
 
@@ -84,6 +86,40 @@ TEST(RigidBody, FreeSphereRotatesUniformly) {
   const Quat expected = Quat(Eigen::AngleAxisd(w.norm() * h * steps, w.normalized())) * Quat(Eigen::AngleAxisd(0.3, Vec3::UnitY()));
   EXPECT_LT(p.orientation[0].angularDistance(expected), 1e-10);
   EXPECT_LT((p.angularVelocity[0] - w).norm(), 1e-12 * w.norm());
+}
+
+// A sphere that does not turn (World::setSphereOrientations(false)) keeps its orientation, and
+// its angular velocity under a torque that turns in space is the turning sphere's to round-off:
+// p = 2 (0, L) ⊗ q holds for any fixed q, so the kicks integrate L exactly either way
+// (closed form: L(t) = L0 + integral of the torque).
+TEST(RigidBody, SphereThatDoesNotTurnKeepsItsOrientationAndItsSpin) {
+  const Quat q0(Eigen::AngleAxisd(0.3, Vec3::UnitY()));
+  ParticleStore turning, fixed;
+  for (ParticleStore* p : {&turning, &fixed}) {
+    p->add(0, 0, Vec3::Zero(), q0, 1.0, Vec3::Constant(0.4), 1.0);
+    p->setAngularVelocity(0, Vec3(1.0, -2.0, 0.5));
+  }
+  const Vec4 start = asVector(fixed.orientation[0]);
+  const double h = 1e-3;
+  const int steps = 10000;
+  const auto torque = [](double t) { return Vec3(std::cos(3.0 * t), std::sin(3.0 * t), 0.2); };
+  for (int step = 0; step < steps; ++step) {
+    for (auto [p, turns] : {std::pair{&turning, true}, std::pair{&fixed, false}}) {
+      p->torque[0] = torque(step * h);
+      kick(*p, 0, 0.5 * h);
+      drift(*p, 0, h, turns);
+      p->torque[0] = torque((step + 1) * h);
+      kick(*p, 0, 0.5 * h);
+    }
+  }
+  EXPECT_EQ(asVector(fixed.orientation[0]), start);
+  EXPECT_GT(turning.orientation[0].angularDistance(q0), 0.1);
+  const Vec3 w = fixed.angularVelocity[0];
+  EXPECT_LT((w - turning.angularVelocity[0]).norm(), 1e-12 * w.norm());
+  // L(t) = L0 + integral_0^t torque, by the trapezoidal kicks to O(h^2) of the closed form.
+  const double t = steps * h;
+  const Vec3 L = 0.4 * Vec3(1.0, -2.0, 0.5) + Vec3(std::sin(3.0 * t) / 3.0, (1.0 - std::cos(3.0 * t)) / 3.0, 0.2 * t);
+  EXPECT_LT((0.4 * w - L).norm(), 1e-6 * L.norm());
 }
 
 TEST(RigidBody, VelocityVerletIsExactForConstantForce) {

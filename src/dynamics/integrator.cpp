@@ -46,8 +46,9 @@ void kick(ParticleStore& particles, std::size_t i, double halfStep) {
   particles.updateAngularVelocity(i);
 }
 
-void drift(ParticleStore& particles, std::size_t i, double step) {
+void drift(ParticleStore& particles, std::size_t i, double step, bool turns) {
   particles.position[i] += step * particles.velocity[i];
+  if (!turns) return;
   const Vec3& I = particles.inertia[i];
   Vec4& p = particles.conjugateMomentum[i];
   if (isotropic(I)) {

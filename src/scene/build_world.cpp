@@ -184,6 +184,7 @@ World buildWorld(const Scene& scene) {
   }
   World world(shapes, materials, scene.domain, skin, scene.broadPhase);
   world.setReorderInterval(scene.reorderEvery);
+  world.setSphereOrientations(scene.output.sphereOrientation);
   if (scene.output.energy) world.enableEnergyLedger();
   if (scene.detectorTolerance > 0.0) world.setDetectorControl({.tolerance = scene.detectorTolerance});
   for (const InteractionSpec& in : scene.interactions) {

@@ -676,7 +676,8 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
 
   if (const YAML::Node out = root["output"]) {
     r.allowOnly(out, "output",
-                {"frames", "log_every", "contacts", "surface_resolution", "checkpoint_every_steps", "checkpoint_every_minutes", "energy", "compression"});
+                {"frames", "log_every", "contacts", "surface_resolution", "checkpoint_every_steps", "checkpoint_every_minutes", "energy", "compression",
+                 "sphere_orientation"});
     scene.output.frames = static_cast<std::size_t>(r.integer(out, "frames", "output", 0.0, 1e5, 20.0));
     scene.output.logEvery = static_cast<std::size_t>(r.integer(out, "log_every", "output", 0.0, 1e12, 0.0));
     scene.output.contacts = r.flag(out, "contacts", "output", true);
@@ -693,6 +694,7 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
       scene.output.compressionWall = r.plate(press, "output.compression", scene.walls);
     }
     scene.output.energy = r.flag(out, "energy", "output", false);
+    scene.output.sphereOrientation = r.flag(out, "sphere_orientation", "output", false);
     for (std::size_t k = 0; scene.output.energy && k < scene.interactions.size(); ++k) {
       if (!storesEnergy(scene.interactions[k].normal)) {
         r.fail(out["energy"], "output.energy",

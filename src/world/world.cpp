@@ -36,7 +36,14 @@ World::World(std::vector<Superquadric> shapes, std::vector<Material> materials, 
       modelSet_(models_.size(), false),
       domain_(domain),
       neighbours_(skin, search),
-      parts_{wholeBox(domain)} {}
+      parts_{wholeBox(domain)} {
+  setSphereOrientations(false);
+}
+
+void World::setSphereOrientations(bool advanced) {
+  turns_.clear();
+  for (const Superquadric& s : shapes_) turns_.push_back(advanced || !s.isSphere());
+}
 
 void World::setCommunicator(std::shared_ptr<const Communicator> communicator) {
   communicator_ = std::move(communicator);
@@ -259,7 +266,7 @@ void World::step() {
 #pragma omp parallel for schedule(static)
   for (std::ptrdiff_t i = 0; i < n; ++i) {
     kick(p, i, 0.5 * h);
-    drift(p, i, h);
+    drift(p, i, h, turns_[p.shape[i]] != 0);
   }
   for (std::size_t k = 0; k < walls_.size(); ++k) {
     Wall& w = walls_[k];

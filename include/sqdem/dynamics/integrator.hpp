@@ -23,7 +23,9 @@ namespace sqdem {
 
 /// Half kick of particle i with its force and torque (world frame).
 void kick(ParticleStore& particles, std::size_t i, double halfStep);
-/// Drift of particle i: translation and free rotation over a full step.
-void drift(ParticleStore& particles, std::size_t i, double step);
+/// Drift of particle i: translation and, when it `turns`, free rotation over a full step (a body
+/// that does not turn keeps its orientation and its world angular momentum: p = 2 (0, L) ⊗ q
+/// holds for the fixed q, the kicks stay exact; World::setSphereOrientations).
+void drift(ParticleStore& particles, std::size_t i, double step, bool turns = true);
 
 }  // namespace sqdem

@@ -136,6 +136,7 @@ struct OutputSpec {
   std::uint64_t checkpointSteps = 0;  ///< also write <name>_latest.checkpoint every N steps (0: off)
   double checkpointMinutes = 10.0;    ///< ... and every M wall-clock minutes (0: off)
   bool energy = false;          ///< keep an energy ledger (world/energy_ledger.hpp) and log it
+  bool sphereOrientation = false;  ///< advance spheres' orientations (World::setSphereOrientations)
   std::optional<std::size_t> compressionWall;  ///< the pressing plate: compression_report.hpp
 };
 

@@ -95,6 +95,10 @@ class World {
   const Communicator& communicator() const { return *communicator_; }
 
   void setGravity(const Vec3& g) { gravity_ = g; }
+  /// Whether a step advances spheres' orientations (default: no). Nothing a sphere does depends
+  /// on its orientation (its contacts are round, its inertia isotropic); only the output's
+  /// quaternions show it, and turning it costs most of a sphere's integration.
+  void setSphereOrientations(bool advanced);
   const Vec3& gravity() const { return gravity_; }
   /// Re-order the particle slots along a Hilbert curve every `rebuilds` neighbour-list builds
   /// (0: never). Results do not change: contacts and sums follow ids, not slots.
@@ -222,6 +226,7 @@ class World {
   std::vector<MeshFeatures> meshes_;
   std::vector<MeshTree> meshTrees_;       ///< meshes_[i]'s candidate search
   std::vector<Vec3> wallReference_;       ///< wall points at the last candidate build
+  std::vector<std::uint8_t> turns_;       ///< per shape: whether a drift advances the orientation
   Interactions interactions_;
   ContactStatistics statistics_;
   StepTiming timing_;
