@@ -73,10 +73,11 @@ PolyData surfaceFrame(const World& world, const std::vector<int>& coordination, 
   d.points = float32("Points", 3);
   DataArray id = int64("id"), velocity = float32("velocity", 3), spin = float32("angular_velocity", 3),
             force = float32("force", 3), z = int32("coordination"), radius = float32("volume_radius", 1);
-  const std::size_t points = p.size() * grid.angles.size(), quads = p.size() * grid.quads.size();
-  for (DataArray* array : {&d.points, &id, &velocity, &spin, &force, &z, &radius}) array->reserve(points);
+  const std::size_t vertices = p.size() * grid.angles.size(), quads = p.size() * grid.quads.size();
+  for (DataArray* array : {&d.points, &id, &velocity, &spin, &force, &z, &radius}) array->reserve(vertices);
   d.connectivity.reserve(4 * quads);
   d.offsets.reserve(quads);
+  auto& points = std::get<std::vector<float>>(d.points.values);  // 10^7 of them: no visit per vertex
   std::vector<Vec3> body;  // the vertices of `drawn` in its body frame
   const Superquadric* drawn = nullptr;
   for (std::size_t i = 0; i < p.size(); ++i) {
@@ -88,7 +89,10 @@ PolyData surfaceFrame(const World& world, const std::vector<int>& coordination, 
     }
     const auto first = static_cast<std::int64_t>(d.pointCount());
     const Pose pose{p.position[i], p.orientation[i]};
-    for (const Vec3& x : body) d.points.push(pose.toWorld(x));
+    for (const Vec3& x : body) {
+      const Vec3 y = pose.toWorld(x);
+      points.insert(points.end(), {static_cast<float>(y.x()), static_cast<float>(y.y()), static_cast<float>(y.z())});
+    }
     id.push(static_cast<double>(p.id[i]), body.size());
     velocity.push(p.velocity[i], body.size());
     spin.push(p.angularVelocity[i], body.size());
