@@ -1,7 +1,10 @@
 // Elliptic JKR (Johnson-Greenwood, 004 Eqs. 19-28) and circular JKR (001 Eqs. 7-10).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
 #include <numbers>
 
 #include "sqdem/mechanics/elliptic.hpp"
@@ -180,6 +183,54 @@ TEST(EllipticJkr, ReachBoundsTheDetachmentGapOfEveryEllipse) {
   }
   std::printf("widest detachment gap %.4e m, reach %.4e m (%.2f x)\n", widest, reach, reach / widest);
   EXPECT_LE(widest, reach);
+}
+
+}  // namespace
+}  // namespace sqdem
+
+namespace sqdem {
+namespace {
+
+// The tabulated curve (johnson_greenwood_table.hpp) against the exact one at random points:
+// lambda log-uniform in [1e-2, 1]; each curve's ends (detachment overlap and pull-off force),
+// and its points at the same distance w^2 |delta_d| beyond each one's detachment overlap, w
+// log-uniform in [1e-6, 1e3] (up to 1e6 |delta_d|). The same distance, because F rises as the
+// square root of it at detachment: the ends' error (~1e-7 of delta_d) would show there as an
+// error of ~3e-4 in F at a fixed overlap, while the curve is merely shifted by 1e-7 |delta_d|.
+// Errors of the force in units of max(|F|, |F_pull-off|), of the area relative to it, of g absolute.
+TEST(EllipticJkr, TabulatedCurveMatchesTheExactOne) {
+  const double E = 1e9, W = 0.2, R = 1e-5;
+  std::uint64_t state = 12345;
+  const auto uniform = [&] {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return static_cast<double>(state >> 11) * 0x1.0p-53;
+  };
+  double forceError = 0, areaError = 0, ratioError = 0, endError = 0;
+  for (int c = 0; c < 400; ++c) {
+    const double lambda = std::pow(10.0, -2.0 * uniform());
+    const RelativeRadii r = radiiOf(R * lambda, R / lambda);
+    // Above lambda = 0.999 the exact route loses digits (1 - sqrt(g) -> 0 in Eqs. 19-21: its
+    // pull-off is 5e-5 off at lambda = 1 - 5e-6); there the reference is the circle it tends
+    // to, 1.4e-7 from the curve at lambda = 0.999.
+    const EllipticJkr exact(E, W, lambda < 0.999 ? r : radiiOf(R, R), JkrCurve::Exact), table(E, W, r, JkrCurve::Tabulated);
+    endError = std::max({endError, std::abs(table.pullOffForce() / exact.pullOffForce() - 1.0),
+                         std::abs(table.detachmentOverlap() / exact.detachmentOverlap() - 1.0)});
+    for (int k = 0; k < 50; ++k) {
+      const double w = std::pow(10.0, -6.0 + 9.0 * uniform());
+      const double d = exact.detachmentOverlap(), along = w * w * std::abs(d);
+      const EllipticJkrState a = exact.evaluate(d + along), b = table.evaluate(table.detachmentOverlap() + along);
+      ASSERT_TRUE(a.attached && b.attached) << lambda << " " << w;
+      forceError = std::max(forceError, std::abs(b.force - a.force) / std::max(std::abs(a.force), -exact.pullOffForce()));
+      areaError = std::max(areaError, std::abs(b.area / a.area - 1.0));
+      if (lambda < 0.999) ratioError = std::max(ratioError, std::abs(b.axisRatio - a.axisRatio));  // the circle's g is 1
+    }
+  }
+  std::printf("tabulated JKR curve, largest errors: force %.2e, area %.2e, axis ratio %.2e, pull-off and detachment %.2e\n",
+              forceError, areaError, ratioError, endError);
+  EXPECT_LT(forceError, 1e-6);
+  EXPECT_LT(areaError, 3e-6);
+  EXPECT_LT(ratioError, 3e-6);
+  EXPECT_LT(endError, 6e-7);
 }
 
 }  // namespace

@@ -1,6 +1,9 @@
 // Greenwood-Williamson roughness factors (004 Eqs. 29-36) and the review's Table 3.
 #include <gtest/gtest.h>
 
+#include <boost/math/quadrature/exp_sinh.hpp>
+#include <algorithm>
+
 #include <array>
 #include <cmath>
 #include <numbers>
@@ -122,6 +125,52 @@ TEST(GreenwoodWilliamson, JkrAsperitiesReduceToHertzWithoutAdhesion) {
   }
   std::printf("W -> 0: within %.2g of Greenwood-Williamson\n", worst);
   EXPECT_LT(worst, 1e-4);
+}
+
+// RoughJkrLaw's fixed Gauss-Legendre rules against adaptive exp-sinh quadrature of its
+// integrals (roughness_gw.hpp), both on the exact JKR curve: force and dF/dh in units of the
+// integral of |f| phi (the sum's own scale; F crosses zero), area relative. Asperity heights
+// from 1e-2 to 1e2 JKR overlap scales, separations across the law's range, three radius ratios.
+// Then the tabulated curve's law against the exact one's.
+TEST(GreenwoodWilliamson, JkrAsperitySumsMatchAdaptiveQuadrature) {
+  using std::numbers::pi;
+  const double E = 1e9, gamma = 0.05, W = 2 * gamma;
+  double ruleError = 0.0, tableError = 0.0;
+  for (const double ratio : {0.05, 0.4, 1.0}) {
+    RelativeRadii r;
+    r.Ri = ratio * 1e-5;
+    r.Rj = 1e-5;
+    r.Rc = r.Ri * r.Rj / (r.Ri + r.Rj);
+    const NormalContact c{.radii = r, .factors = hertzFactors(ratio, EccentricityMethod::Exact), .effectiveModulus = E};
+    const EllipticJkr jkr(E, W, r, JkrCurve::Exact);
+    const double scale = std::pow(9 * pi * W * std::sqrt(std::sqrt(r.Ri * r.Rj)) / (4 * E), 2.0 / 3.0);
+    for (const double sigma : {1e-2 * scale, scale, 1e2 * scale}) {
+      const RoughContact rough{.asperityCount = 50.0, .sigma = sigma};
+      for (const double h : {-3.0, -1.0, 0.0, 1.0, 2.5, 3.9}) {
+        const auto integral = [&](auto g) {
+          boost::math::quadrature::exp_sinh<double> integrator;
+          return rough.asperityCount * integrator.integrate([&](double s) -> double {
+            return g(s) * std::exp(-0.5 * (s + h) * (s + h)) / std::sqrt(2.0 * pi);
+          });
+        };
+        const double force = integral([&](double s) { return jkr.evaluate(sigma * s).force; });
+        const double slope = integral([&](double s) { return -(s + h) * jkr.evaluate(sigma * s).force; });
+        const double area = integral([&](double s) { return jkr.evaluate(sigma * s).area; });
+        const double size = integral([&](double s) { return std::abs(jkr.evaluate(sigma * s).force); });
+        const double slopeSize = integral([&](double s) { return std::abs((s + h) * jkr.evaluate(sigma * s).force); });
+        RoughJkrLaw::History none;
+        const NormalResponse exact = RoughJkrLaw{rough, gamma, JkrCurve::Exact}.force(c, -h * sigma, none);
+        const NormalResponse table = RoughJkrLaw{rough, gamma, JkrCurve::Tabulated}.force(c, -h * sigma, none);
+        ruleError = std::max({ruleError, std::abs(exact.force - force) / size, std::abs(-exact.stiffness * sigma - slope) / slopeSize,
+                              std::abs(exact.area / area - 1.0)});
+        tableError = std::max({tableError, std::abs(table.force - exact.force) / size, std::abs(table.area / exact.area - 1.0)});
+      }
+    }
+  }
+  std::printf("rough JKR: fixed rules within %.2e of adaptive quadrature; the tabulated curve within %.2e of the exact one\n",
+              ruleError, tableError);
+  EXPECT_LT(ruleError, 1e-11);
+  EXPECT_LT(tableError, 1e-6);
 }
 
 }  // namespace

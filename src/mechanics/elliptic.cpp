@@ -1,5 +1,6 @@
 #include "sqdem/mechanics/elliptic.hpp"
 
+#include "sqdem/math/cubic_stencil.hpp"
 #include "sqdem/mechanics/elliptic_integrals.hpp"
 
 #include <algorithm>
@@ -33,12 +34,9 @@ class EccentricityTable {
   }
 
   HertzFactors operator()(double ratio) const {
-    const double x = (std::log(ratio) - uMin_) / step_;
-    const int k = std::clamp(static_cast<int>(x) - 1, 0, intervals - 3);
-    const double s = x - k;  // position relative to node k, in [1, 2] inside the grid
-    const HertzFactors* y = &nodes_[k];
-    const double l[4] = {-(s - 1) * (s - 2) * (s - 3) / 6.0, s * (s - 2) * (s - 3) / 2.0,
-                         -s * (s - 1) * (s - 3) / 2.0, s * (s - 1) * (s - 2) / 6.0};
+    const CubicStencil c = cubicStencil((std::log(ratio) - uMin_) / step_, intervals);
+    const HertzFactors* y = &nodes_[c.first];
+    const std::array<double, 4>& l = c.weight;
     HertzFactors h{0.0, 0.0, 0.0, 0.0, 0.0};
     for (int i = 0; i < 4; ++i) {
       h.e2 += l[i] * y[i].e2;

@@ -35,7 +35,7 @@ JohnsonGreenwoodPoint johnsonGreenwoodPoint(double lambda, double g) {
   return p;
 }
 
-EllipticJkr::EllipticJkr(double effectiveModulus, double workOfAdhesion, const RelativeRadii& radii)
+EllipticJkr::EllipticJkr(double effectiveModulus, double workOfAdhesion, const RelativeRadii& radii, JkrCurve method)
     : circle_{effectiveModulus, workOfAdhesion, std::sqrt(radii.Ri * radii.Rj)},
       lambda_(std::sqrt(radii.ratio())) {
   if (!(effectiveModulus > 0.0) || !(workOfAdhesion > 0.0) || !(radii.Ri > 0.0) || !(radii.Rj >= radii.Ri)) {
@@ -48,6 +48,13 @@ EllipticJkr::EllipticJkr(double effectiveModulus, double workOfAdhesion, const R
   if (circular()) {
     pullOffForce_ = -circle_.pullOffForce();
     detachmentOverlap_ = circle_.overlapAt(circle_.minimumContactRadius());
+    return;
+  }
+  if (method == JkrCurve::Tabulated && lambda_ >= detail::JohnsonGreenwoodTable::minLambda) {
+    tabulated_ = true;
+    curve_ = detail::JohnsonGreenwoodTable::instance().curve(lambda_);
+    detachmentOverlap_ = curve_.detachment * overlapScale_;
+    pullOffForce_ = curve_.pullOff * forceScale_;
     return;
   }
   gHertz_ = std::sqrt(1.0 - eccentricitySquaredExact(radii.ratio()));
@@ -81,6 +88,15 @@ EllipticJkrState EllipticJkr::evaluate(double overlap) const {
     s.area = pi * a * a;
     return s;
   }
+  if (tabulated_) {
+    const detail::JohnsonGreenwoodValue v = detail::JohnsonGreenwoodTable::instance().at(curve_, overlap / overlapScale_);
+    return {.force = v.force * forceScale_, .area = v.area * areaScale_, .axisRatio = v.axisRatio};
+  }
+  return evaluateExact(overlap);
+}
+
+EllipticJkrState EllipticJkr::evaluateExact(double overlap) const {
+  EllipticJkrState s;
   // delta_bar(g) falls from +inf at g_H to its minimum at g_d: bracket the root by halving the
   // distance to g_H, then TOMS 748. Beyond the last representable bracket the contact is Hertz.
   const double target = overlap / overlapScale_;
@@ -115,7 +131,8 @@ EllipticJkrState EllipticJkr::evaluate(double overlap) const {
 
 EllipticJkrLaw EllipticJkrLaw::read(const LawInput& in, const PairElasticity& pair) {
   const double gamma = in.positive("surface_energy", "J/m^2, gamma; W = 2 gamma");
-  return {pair.reducedSurfaceEnergy(gamma)};
+  const bool tabulated = !in.has("tabulated") || in.flag("tabulated");
+  return {pair.reducedSurfaceEnergy(gamma), tabulated ? JkrCurve::Tabulated : JkrCurve::Exact};
 }
 
 NormalResponse EllipticJkrLaw::force(const NormalContact& c, double overlap, History& h) const {

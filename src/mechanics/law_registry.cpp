@@ -17,7 +17,7 @@ static_assert(NormalLawComponent<HertzLaw> && NormalLawComponent<GreenwoodWillia
 void allowOnly(const LawInput& in, std::span<const std::string_view> allowed, std::string_view what);
 
 constexpr std::array<std::string_view, 1> hertzKeys{"roughness"};
-constexpr std::array<std::string_view, 2> jkrKeys{"surface_energy", "roughness"};
+constexpr std::array<std::string_view, 3> jkrKeys{"surface_energy", "tabulated", "roughness"};
 constexpr std::array<std::string_view, 2> roughnessKeys{"sigma", "asperity_count"};
 
 /// The `roughness` mapping: Greenwood-Williamson's sigma_s and N A_n (004 Eqs. 29-36).
@@ -38,7 +38,7 @@ NormalLaw readHertz(const LawInput& in, const PairElasticity&) {
 NormalLaw readJkr(const LawInput& in, const PairElasticity& pair) {
   const EllipticJkrLaw smooth = EllipticJkrLaw::read(in, pair);
   if (!in.has("roughness")) return smooth;
-  return RoughJkrLaw{readRoughness(in), smooth.surfaceEnergy};
+  return RoughJkrLaw{readRoughness(in), smooth.surfaceEnergy, smooth.curve};
 }
 
 template <class L>

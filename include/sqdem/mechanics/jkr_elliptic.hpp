@@ -26,8 +26,12 @@
 // Parameters: effective modulus E* (Pa), work of adhesion W (J/m^2; W = 2 gamma for equal
 // surface energies gamma), relative radii Ri <= Rj (m). Valid in the JKR regime (Tabor
 // parameter > 3, 001 Eq. 1) and for small contact ellipses (Hertz assumptions).
+//
+// The dimensionless curve depends on lambda alone: JkrCurve::Tabulated reads it from a table
+// (johnson_greenwood_table.hpp) for lambda >= 1e-2, JkrCurve::Exact solves it as above.
 
 #include "sqdem/mechanics/elliptic.hpp"
+#include "sqdem/mechanics/johnson_greenwood_table.hpp"
 #include "sqdem/mechanics/jkr_circular.hpp"
 #include "sqdem/mechanics/law_input.hpp"
 #include "sqdem/mechanics/normal_law.hpp"
@@ -59,9 +63,15 @@ struct JkrHistory {
   bool attached = false;
 };
 
+/// How EllipticJkr finds its point of the dimensionless curve.
+enum class JkrCurve {
+  Exact,      ///< the minimisations and the root solve of Eqs. 19-28 (~10-20 us per contact)
+  Tabulated,  ///< the table (docs/contact_laws.md states its error); exact for lambda < 1e-2
+};
+
 class EllipticJkr {
  public:
-  EllipticJkr(double effectiveModulus, double workOfAdhesion, const RelativeRadii& radii);
+  EllipticJkr(double effectiveModulus, double workOfAdhesion, const RelativeRadii& radii, JkrCurve method = JkrCurve::Exact);
 
   /// Force and area on the stable (displacement-controlled) branch at this overlap (m).
   EllipticJkrState evaluate(double overlap) const;
@@ -72,12 +82,15 @@ class EllipticJkr {
 
  private:
   bool circular() const { return lambda_ >= 1.0 - 1e-6; }
+  EllipticJkrState evaluateExact(double overlap) const;
 
   CircularJkr circle_;  ///< E*, W and R_c1; the law itself when circular()
   double lambda_;
   double forceScale_, overlapScale_, areaScale_;
   double gHertz_ = 1.0, gDetach_ = 1.0;
   double pullOffForce_ = 0.0, detachmentOverlap_ = 0.0;
+  bool tabulated_ = false;  ///< the curve from the table (JkrCurve::Tabulated within its range)
+  detail::JohnsonGreenwoodTable::Curve curve_;  ///< its place there
 };
 
 /// normal: elliptic_jkr (normal_law.hpp component): Johnson-Greenwood with the contact's relative
@@ -86,12 +99,14 @@ class EllipticJkr {
 /// while attached its range is unbounded (the law detaches). S_n = 2 E* sqrt(A/pi), the normal
 /// stiffness of a contact of area A (flat punch): finite at detachment, where dF/d(delta) is not.
 /// History: attached. A pull-off |F| of the contact counts as F_C in the Coulomb limit.
+/// Key `tabulated` (default true): the curve from the table; false solves it per contact.
 struct EllipticJkrLaw {
   using History = JkrHistory;
   double surfaceEnergy = 0.0;  ///< gamma (J/m^2) the law uses, W = 2 gamma
+  JkrCurve curve = JkrCurve::Tabulated;
 
   static EllipticJkrLaw read(const LawInput& in, const PairElasticity& pair);
-  EllipticJkr at(const NormalContact& c) const { return {c.effectiveModulus, 2.0 * surfaceEnergy, c.radii}; }
+  EllipticJkr at(const NormalContact& c) const { return {c.effectiveModulus, 2.0 * surfaceEnergy, c.radii, curve}; }
   NormalResponse force(const NormalContact& c, double overlap, History& h) const;
   double range(const History& h) const;
   /// |detachment overlap| of the circular contact of radius R, times 2 (a bound for the elliptic

@@ -18,6 +18,7 @@
 //
 // N asperity density (1/m^2), A_n nominal contact area (m^2), sigma_s (m), E* (Pa), R_c (m).
 
+#include "sqdem/mechanics/jkr_elliptic.hpp"
 #include "sqdem/mechanics/normal_law.hpp"
 
 namespace sqdem {
@@ -54,15 +55,18 @@ struct GreenwoodWilliamsonLaw {
 /// asperity's own overlap w: Eq. 29 with the asperity force of Eq. 27,
 /// f(w) = 4/3 E* R_c1^1/2 w^3/2 gamma_JG(w), the elliptic JKR force (jkr_elliptic.hpp):
 ///   F = N A_n int_0^inf f(sigma s) phi(s + h) ds,  A = N A_n int_0^inf A_JG(sigma s) phi(s + h) ds
-/// (exp-sinh quadrature). Asperities snap into contact at w = 0 and act on the stable JKR branch
-/// for w >= 0, as in Fuller & Tabor's loading curves (Proc. R. Soc. A 345, 1975): no asperity
-/// history, hence no hysteresis. As W -> 0 it is GreenwoodWilliamsonLaw with R_c1 and the JKR
-/// factors' Hertz limit (tested). Range 4 sigma; S_n by central differences. The Coulomb limit
-/// stays mu F_n (no rule for the adhesion of a rough contact's asperities in friction).
+/// (fixed Gauss-Legendre rules over the Gaussian, roughness_gw.cpp; within 1e-11 of adaptive
+/// exp-sinh quadrature, tests/roughness_test.cpp). Asperities snap into contact at w = 0 and
+/// act on the stable JKR branch for w >= 0, as in Fuller & Tabor's loading curves (Proc. R.
+/// Soc. A 345, 1975): no asperity history, hence no hysteresis. As W -> 0 it is
+/// GreenwoodWilliamsonLaw with R_c1 and the JKR factors' Hertz limit (tested). Range 4 sigma;
+/// S_n = dF/d(delta) by the same rules (phi's derivative in h). The Coulomb limit stays mu F_n
+/// (no rule for the adhesion of a rough contact's asperities in friction).
 struct RoughJkrLaw {
   struct History {};
   RoughContact rough;
   double surfaceEnergy = 0.0;  ///< gamma (J/m^2), W = 2 gamma
+  JkrCurve curve = JkrCurve::Tabulated;  ///< of the asperities' JKR law (EllipticJkrLaw's key `tabulated`)
 
   NormalResponse force(const NormalContact& c, double overlap, History&) const;
   double range(const History&) const { return 4.0 * rough.sigma; }
