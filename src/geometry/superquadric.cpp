@@ -93,6 +93,13 @@ void requireInRange(const char* name, double value, double lo, double hi) {
   }
 }
 
+/// 2 a b c e1 e2 B(e1/2 + 1, e1) B(e2/2, e2/2), e = 2/n (Jaklic et al. 2000).
+double computeVolume(const Superquadric& s) {
+  using boost::math::beta;
+  const double e1 = 2.0 / s.n1(), e2 = 2.0 / s.n2();
+  return 2.0 * s.a() * s.b() * s.c() * e1 * e2 * beta(e1 / 2.0 + 1.0, e1) * beta(e2 / 2.0, e2 / 2.0);
+}
+
 /// Largest |x| over the surface: dense sampling of one octant of the parametrisation, refined
 /// by a shrinking pattern search, with a small safety margin; never above the box corner.
 double computeBoundingRadius(const Superquadric& s) {
@@ -135,7 +142,8 @@ Superquadric::Superquadric(double a, double b, double c, double n1, double n2)
   requireInRange("n1", n1, 2.0, maxExponent);
   requireInRange("n2", n2, 2.0, maxExponent);
   boundingRadius_ = computeBoundingRadius(*this);
-  volumeEquivalentRadius_ = std::cbrt(3.0 * volume() / (4.0 * std::numbers::pi));
+  volume_ = computeVolume(*this);
+  volumeEquivalentRadius_ = std::cbrt(3.0 * volume_ / (4.0 * std::numbers::pi));
 }
 
 double Superquadric::gauge(const Vec3& x) const {
@@ -217,12 +225,6 @@ Vec3 Superquadric::surfacePoint(double eta, double omega) const {
   const double ring = std::pow(std::abs(std::cos(eta)), e1);
   return Vec3(a() * ring * signedPow(std::cos(omega), e2),
               b() * ring * signedPow(std::sin(omega), e2), c() * signedPow(std::sin(eta), e1));
-}
-
-double Superquadric::volume() const {
-  using boost::math::beta;
-  const double e1 = 2.0 / n1_, e2 = 2.0 / n2_;
-  return 2.0 * a() * b() * c() * e1 * e2 * beta(e1 / 2.0 + 1.0, e1) * beta(e2 / 2.0, e2 / 2.0);
 }
 
 Vec3 Superquadric::secondMomentsOfVolume() const {

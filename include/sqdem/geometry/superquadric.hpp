@@ -73,8 +73,9 @@ class Superquadric {
   /// Surface parametrisation, eta in [-pi/2, pi/2] (latitude), omega in [-pi, pi] (longitude).
   Vec3 surfacePoint(double eta, double omega) const;
 
-  /// Volume (m^3): 2 a b c e1 e2 B(e1/2 + 1, e1) B(e2/2, e2/2), e = 2/n (Jaklic et al. 2000).
-  double volume() const;
+  /// Volume (m^3): 2 a b c e1 e2 B(e1/2 + 1, e1) B(e2/2, e2/2), e = 2/n (Jaklic et al. 2000),
+  /// computed once (the packing measures ask for it every log row).
+  double volume() const { return volume_; }
   /// Radius of the sphere of equal volume (m).
   double volumeEquivalentRadius() const { return volumeEquivalentRadius_; }
   double mass(double density) const { return density * volume(); }
@@ -89,6 +90,7 @@ class Superquadric {
   Vec3 halfExtents_;
   double n1_, n2_;
   double boundingRadius_ = 0.0;
+  double volume_ = 0.0;
   double volumeEquivalentRadius_ = 0.0;
 };
 
