@@ -2,7 +2,9 @@
 // contactForce (contact_model.hpp) for one normal law type: the body the engine's kernels
 // instantiate per law (no dispatch per contact) and the generic entry point visits.
 
+#include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <variant>
 
 #include "sqdem/interaction/contact_model.hpp"
@@ -87,6 +89,42 @@ template <NormalLawComponent Law>
       out.momentOnB = model.rolling->moment(law, c, delta, n, vt, motion.volumeRadiusA, motion.volumeRadiusB,
                                             motion.angularVelocityA, motion.angularVelocityB, history.rolling, dt);
     }
+  }
+  return out;
+}
+
+/// contactForce for HertzLaw on a round contact (pair_kind.hpp: the circle of R*, no curvatures):
+/// with gamma = sqrt 2, beta = 2, Rc = R*/2 (004 Eqs. 1-2), a = sqrt(R* delta) is the contact
+/// radius and F = 4/3 E* a delta, S_n = 2 E* a, A = pi a^2, Mindlin's circle K_t = 8 G* a; both
+/// damping coefficients come from one sqrt(m* a) (ViscousDamping: scale sqrt(m k)). The same
+/// forces as contactForce to round-off, with three square roots instead of six.
+struct RoundHertz {
+  explicit RoundHertz(const ContactModel& model)
+      : rootNormal(std::sqrt(2.0 * model.effectiveModulus)), rootTangential(std::sqrt(8.0 * model.tangential.effectiveShear)) {}
+  double rootNormal, rootTangential;  ///< sqrt(2 E*), sqrt(8 G*): the model's, once per group
+};
+[[gnu::always_inline]] inline ContactForce roundHertzForce(const ContactModel& model, const RoundHertz& roots, const ContactKinematics& motion,
+                                                           double overlap, const Vec3& n, ContactHistory& history, double dt) {
+  if (!(overlap > 0.0)) {  // HertzLaw does not act; the tangential spring ends
+    history.spring.setZero();
+    return {.acting = false};
+  }
+  const double rA = motion.volumeRadiusA, rB = motion.volumeRadiusB;
+  const double Rstar = rB > 0.0 ? rA * rB / (rA + rB) : rA;
+  const double a = std::sqrt(Rstar * overlap), E = model.effectiveModulus;
+  const double rootMassRadius = model.damping.scale() * std::sqrt(motion.effectiveMass * a);
+  ContactForce out;
+  out.normalStiffness = 2.0 * E * a;
+  out.normalDamping = rootMassRadius * roots.rootNormal * -motion.relativeVelocity.dot(n);
+  out.normal = 4.0 / 3.0 * E * a * overlap + out.normalDamping;
+  out.area = std::numbers::pi * a * a;
+  out.onB = out.normal * n;
+  const MindlinSpring& tangential = model.tangential;
+  if (tangential.friction > 0.0) {
+    const double G = tangential.effectiveShear;
+    const Vec3 vt = motion.relativeVelocity - motion.relativeVelocity.dot(n) * n;
+    out.onB += tangential.circleForce(8.0 * G * a, rootMassRadius * roots.rootTangential, n, vt,
+                                      tangential.friction * std::max(out.normal, 0.0), history.spring, dt);
   }
   return out;
 }

@@ -29,16 +29,22 @@ bool cachesCurvatures(const ContactModel& model, PairKind kind) {
   return !round(kind) && model.usesCurvatures() && model.curvatureTolerance > 0.0;
 }
 
-/// A round kind's closed form for contact k (round_contact.hpp).
+/// A round kind's closed form for contact k (round_contact.hpp), solved only within the cut-off:
+/// the skin, or the law's range where that is shorter (a gap the law does not act across is
+/// Separated, as nothing is warm-started from a round contact). Two spheres beyond it are
+/// told apart by their squared distance (no square root). A sphere's radius is its bounding
+/// radius (ParticleStore::boundingRadius: one load, where its shape's is three in a chain).
 template <PairKind Kind>
-[[gnu::always_inline]] inline RoundContact detectRound(const InteractionScene& scene, const ContactStore& s, std::uint32_t k) {
+[[gnu::always_inline]] inline RoundContact detectRound(const InteractionScene& scene, const ContactStore& s, std::uint32_t k, double range) {
   const ParticleStore& p = scene.particles;
   const std::uint32_t a = s.a[k], b = s.b[k];
-  const double rA = scene.shapes[p.shape[a]].a();
+  const double rA = p.boundingRadius[a], cutoff = std::min(scene.skin, range);
   if constexpr (withWall(Kind)) {
-    return detectSphereWall(p.position[a], rA, scene.walls[b & ~wallFlag].plane, scene.skin);
+    return detectSphereWall(p.position[a], rA, scene.walls[b & ~wallFlag].plane, cutoff);
   } else {
-    return detectSpheres(p.position[a], rA, p.position[b], scene.shapes[p.shape[b]].a(), scene.skin);
+    const double rB = p.boundingRadius[b], reach = rA + rB + cutoff;
+    if ((p.position[b] - p.position[a]).squaredNorm() > reach * reach) return RoundContact{};
+    return detectSpheres(p.position[a], rA, p.position[b], rB, cutoff);
   }
 }
 
@@ -103,13 +109,20 @@ ContactGeometry detect(const InteractionScene& scene, const std::vector<double>&
   }
 }
 
-/// Relative motion at the contact point.
+/// Relative motion at the contact point; the volume radii (a sphere's own: detectRound).
 template <PairKind Kind>
 [[gnu::always_inline]] inline ContactKinematics kinematics(const InteractionScene& scene, const ContactStore& s, std::uint32_t k, const Vec3& point) {
   const ParticleStore& p = scene.particles;
   const std::uint32_t a = s.a[k], b = s.b[k];
+  const auto volumeRadius = [&](std::uint32_t i) {
+    if constexpr (round(Kind)) {
+      return p.boundingRadius[i];
+    } else {
+      return scene.shapes[p.shape[i]].volumeEquivalentRadius();
+    }
+  };
   ContactKinematics motion;
-  motion.volumeRadiusA = scene.shapes[p.shape[a]].volumeEquivalentRadius();
+  motion.volumeRadiusA = volumeRadius(a);
   motion.angularVelocityA = p.angularVelocity[a];
   const Vec3 velocityA = p.velocity[a] + p.angularVelocity[a].cross(point - p.position[a]);
   if constexpr (withWall(Kind)) {
@@ -117,7 +130,7 @@ template <PairKind Kind>
     motion.effectiveMass = p.mass[a];
   } else {
     motion.relativeVelocity = p.velocity[b] + p.angularVelocity[b].cross(point - p.position[b]) - velocityA;
-    motion.volumeRadiusB = scene.shapes[p.shape[b]].volumeEquivalentRadius();
+    motion.volumeRadiusB = volumeRadius(b);
     motion.angularVelocityB = p.angularVelocity[b];
     motion.effectiveMass = p.mass[a] * p.mass[b] / (p.mass[a] + p.mass[b]);
   }
@@ -175,6 +188,7 @@ void groupKernel(const std::vector<std::uint32_t>& members, const ContactModel& 
                  const InteractionScene& scene, const std::vector<double>& speedBound, std::vector<detail::WarmSkip>* skips,
                  ContactStore& s, ContactStatistics& statistics) {
   const ContactModel model = asRun(pairModel, Kind);
+  [[maybe_unused]] const detail::RoundHertz roundHertz(model);
   const bool cached = cachesCurvatures(model, Kind);
   const double cosHalfAngle = std::cos(0.5 * model.curvatureTolerance);
   long long calls = 0, iterations = 0, confirmations = 0, failures = 0, deep = 0, lost = 0, invalid = 0;
@@ -187,11 +201,14 @@ void groupKernel(const std::vector<std::uint32_t>& members, const ContactModel& 
     [[maybe_unused]] const detail::ContactLoad before = Ledger ? detail::ContactLoad{s.normal[k], s.force[k], s.load[k]}
                                                                : detail::ContactLoad{};
     [[maybe_unused]] const Vec3 pointBefore = Ledger ? s.point[k] : Vec3::Zero();
+    ContactHistory history{.spring = s.spring[k], .normal = s.normalHistory[k]};
+    if (s.withRolling) history.rolling = s.rolling[k];
+    const double range = normalRange(law, history.normal);
     // Round kinds solve a RoundContact (no body-frame points, no curvatures), the others a
     // ContactGeometry: both carry what the store keeps of the geometry.
     auto g = [&] {
       if constexpr (round(Kind)) {
-        return detectRound<Kind>(scene, s, k);
+        return detectRound<Kind>(scene, s, k, range);
       } else {
         const bool curvatures = model.usesCurvatures() && !cached;
         return detect<Kind>(scene, speedBound, model, s, k, curvatures, skips != nullptr ? &(*skips)[k] : nullptr, confirmations);
@@ -205,29 +222,34 @@ void groupKernel(const std::vector<std::uint32_t>& members, const ContactModel& 
     s.normal[k] = g.normal;
     s.overlap[k] = g.overlap;
     s.point[k] = 0.5 * (g.pointA + g.pointB);
-    ContactHistory history{.spring = s.spring[k], .normal = s.normalHistory[k]};
-    if (s.withRolling) history.rolling = s.rolling[k];
     // Out of its law's range a pair is a gap, kept as the next step's warm start or cull, and
     // its history ends; within range the law acts, or keeps its history without acting (a
     // detached contact inside a plastic dent).
-    const double range = normalRange(law, history.normal);
     ContactForce force{.acting = false};
     [[maybe_unused]] double stored = 0.0;
     if (g.converged() && g.overlap > -range) {
       const ContactKinematics motion = kinematics<Kind>(scene, s, k, s.point[k]);
-      const LawGeometry view = [&] {
-        if constexpr (round(Kind)) {
-          return LawGeometry{g.overlap, g.normal, detail::circularContact(model, motion), Vec3::Zero()};
-        } else {
-          return cached ? cachedLawGeometry<Kind>(scene, model, s, k, g, motion, cosHalfAngle)
-                        : detail::lawGeometry(model, g, motion);
+      if constexpr (round(Kind) && std::is_same_v<Law, HertzLaw>) {  // its lean form; HertzLaw's energy needs no contact
+        force = detail::roundHertzForce(model, roundHertz, motion, g.overlap, g.normal, history, scene.dt);
+        if constexpr (Ledger) {
+          if (force.acting) stored = storedEnergy(law, NormalContact{}, g.overlap, history.normal, force.normal - force.normalDamping);
         }
-      }();
-      force = detail::contactForce(model, law, view, motion, history, scene.dt);
-      invalid += !force.valid;
-      if constexpr (Ledger) {
-        if (force.acting) stored = storedEnergy(law, view.contact, g.overlap, history.normal, force.normal - force.normalDamping);
+      } else {
+        const LawGeometry view = [&] {
+          if constexpr (round(Kind)) {
+            return LawGeometry{g.overlap, g.normal, detail::circularContact(model, motion), Vec3::Zero()};
+          } else {
+            return cached ? cachedLawGeometry<Kind>(scene, model, s, k, g, motion, cosHalfAngle)
+                          : detail::lawGeometry(model, g, motion);
+          }
+        }();
+        force = detail::contactForce(model, law, view, motion, history, scene.dt);
+        if constexpr (Ledger) {
+          if (force.acting) stored = storedEnergy(law, view.contact, g.overlap, history.normal, force.normal - force.normalDamping);
+        }
       }
+      invalid += !force.valid;
+      deep += force.acting && g.overlap > 0.5 * motion.volumeRadiusA;
     } else {
       lost += std::isinf(range);  // an adhesive contact its law still held
       history = {};
@@ -259,8 +281,9 @@ void groupKernel(const std::vector<std::uint32_t>& members, const ContactModel& 
       ++failures;
       ++byStatus[static_cast<int>(g.status)];
     }
-    if (!g.converged() && s.separation[k] <= 0.0) s.reset(k);  // nothing to warm-start or cull
-    if (force.acting && g.overlap > 0.5 * scene.shapes[scene.particles.shape[s.a[k]]].volumeEquivalentRadius()) ++deep;
+    if constexpr (!round(Kind)) {  // (a round contact's record is all written above)
+      if (!g.converged() && s.separation[k] <= 0.0) s.reset(k);  // nothing to warm-start or cull
+    }
   }
 #pragma omp critical(sqdem_contact_statistics)
   {

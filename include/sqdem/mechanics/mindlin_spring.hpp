@@ -31,12 +31,19 @@ struct MindlinSpring {
   /// Inline: the circle is the whole of every round (sphere) contact's tangential work.
   Vec3 force(const NormalContact& c, const Vec3& majorAxis, const Vec3& n, double area, const Vec3& vt, double limit,
              const ViscousDamping& damping, double mass, Vec3& spring, double dt) const {
-    keepInTangentPlane(spring, n);
-    spring += vt * dt;
-    if (elliptic) return ellipticForce(c, majorAxis, n, area, vt, limit, damping, mass, spring);
+    if (elliptic) {
+      advance(spring, n, vt, dt);
+      return ellipticForce(c, majorAxis, n, area, vt, limit, damping, mass, spring);
+    }
     // The circle: one stiffness in every tangential direction, K_t = 8 G* a I.
     const double k = 8.0 * effectiveShear * std::sqrt(area / std::numbers::pi);
-    const double eta = damping.coefficient(mass, k);
+    return circleForce(k, damping.coefficient(mass, k), n, vt, limit, spring, dt);
+  }
+
+  /// The circle's force with its stiffness k = 8 G* a (N/m) and damping coefficient eta (N s/m)
+  /// given (the round Hertz contact has both from its own square roots, contact_force.hpp).
+  Vec3 circleForce(double k, double eta, const Vec3& n, const Vec3& vt, double limit, Vec3& spring, double dt) const {
+    advance(spring, n, vt, dt);
     Vec3 Ft = -(k * spring + eta * vt);
     if (Ft.squaredNorm() > limit * limit) {
       // Slip: the spring shrinks to what carries the Coulomb force.
@@ -47,6 +54,11 @@ struct MindlinSpring {
   }
 
  private:
+  /// The spring turned into today's tangent plane and advanced by the step's slip.
+  static void advance(Vec3& spring, const Vec3& n, const Vec3& vt, double dt) {
+    keepInTangentPlane(spring, n);
+    spring += vt * dt;
+  }
   /// The ellipse, with the spring already turned and advanced.
   Vec3 ellipticForce(const NormalContact& c, const Vec3& u, const Vec3& n, double area, const Vec3& vt, double limit,
                      const ViscousDamping& damping, double mass, Vec3& spring) const;
