@@ -1,6 +1,7 @@
 // The reduction of the contacts' loads to particles, in key order per particle, and to walls, as
 // exact sums (see interactions.hpp: independent of the thread count, the slots and the ranks).
 
+#include "sqdem/dynamics/integrator.hpp"
 #include "sqdem/interaction/interactions.hpp"
 
 namespace sqdem {
@@ -20,7 +21,7 @@ LoadOnB Interactions::loadOnB(std::uint32_t k, const ParticleStore& p) const {
 }
 
 void Interactions::reduce(ParticleStore& p, const Vec3& gravity, double drag, const std::vector<Wall>& walls,
-                          std::vector<WallLoadSum>& wallLoads, std::span<const LoadOnB> remote) {
+                          std::vector<WallLoadSum>& wallLoads, std::span<const LoadOnB> remote, double halfStep) {
   const ContactStore& s = store_;
   const auto n = static_cast<std::ptrdiff_t>(p.size());
 #pragma omp parallel for schedule(static)
@@ -49,6 +50,7 @@ void Interactions::reduce(ParticleStore& p, const Vec3& gravity, double drag, co
     }
     p.force[i] = force;
     p.torque[i] = torque;
+    if (halfStep > 0.0) kick(p, static_cast<std::size_t>(i), halfStep);
   }
   // The walls' shares, in key order.
   wallLoads.assign(walls.size(), WallLoadSum{});

@@ -124,7 +124,7 @@ class World {
   /// Advances one step (computes the initial forces first if needed).
   void step();
   /// Computes contacts and forces at the current state (no integration).
-  void computeForces();
+  void computeForces() { computeForcesThenKick(0.0); }
 
   /// The owned particles, slots [0, size()), and their ghosts after them (ghosts()).
   ParticleStore& particles() { return particles_; }
@@ -181,6 +181,9 @@ class World {
   double hertzTimeStep(double speed, double stepsPerCollision) const;
 
  private:
+  /// computeForces; halfStep > 0: every owned particle then takes a kick of that half step in the
+  /// reduction's pass (Interactions::reduce).
+  void computeForcesThenKick(double halfStep);
   const ContactModel& model(std::uint32_t ma, std::uint32_t mb) const { return models_[ma * materials_.size() + mb]; }
   /// What the interaction layer reads of this world.
   InteractionScene interactionScene() const {
