@@ -87,12 +87,13 @@ World smallScene() {
   return world;
 }
 
-class VtkOutput : public testing::Test {
+/// Every test for each compression (output.vtk_compression).
+class VtkOutput : public testing::TestWithParam<VtkCompression> {
  protected:
   void SetUp() override {
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
-    VtkSeries series(dir, "scene", {.contacts = true, .surfaceResolution = resolution});
+    VtkSeries series(dir, "scene", {.contacts = true, .surfaceResolution = resolution, .compression = GetParam()});
     series.writeFrame(world);
   }
   std::filesystem::path file(const char* kind) const { return dir / (std::string("scene_") + kind + "_00000.vtp"); }
@@ -101,7 +102,7 @@ class VtkOutput : public testing::Test {
   World world = smallScene();
 };
 
-TEST_F(VtkOutput, ParticlesCarryTheirWholeState) {
+TEST_P(VtkOutput, ParticlesCarryTheirWholeState) {
   const ParticleStore& p = world.particles();
   const Frame f(file("particles"));
   ASSERT_EQ(f.data->GetNumberOfPoints(), static_cast<vtkIdType>(p.size()));
@@ -136,7 +137,7 @@ TEST_F(VtkOutput, ParticlesCarryTheirWholeState) {
   EXPECT_EQ(std::string(f.data->GetPointData()->GetScalars()->GetName()), "volume_radius");
 }
 
-TEST_F(VtkOutput, SurfacesLieOnEachParticleAndCarryItsValues) {
+TEST_P(VtkOutput, SurfacesLieOnEachParticleAndCarryItsValues) {
   const ParticleStore& p = world.particles();
   const Frame f(file("surfaces"));
   const vtkIdType perParticle = 6 * resolution * resolution + 2;
@@ -164,7 +165,7 @@ TEST_F(VtkOutput, SurfacesLieOnEachParticleAndCarryItsValues) {
   }
 }
 
-TEST_F(VtkOutput, ContactNetworkHasPairsAndWallContacts) {
+TEST_P(VtkOutput, ContactNetworkHasPairsAndWallContacts) {
   const ParticleStore& p = world.particles();
   const Frame f(file("contacts"));
   std::vector<ContactView> contacts;
@@ -203,7 +204,7 @@ TEST_F(VtkOutput, ContactNetworkHasPairsAndWallContacts) {
   EXPECT_GE(pairs, 2);
 }
 
-TEST_F(VtkOutput, WallsAsTheirSurfaces) {
+TEST_P(VtkOutput, WallsAsTheirSurfaces) {
   const Frame f(file("walls"));
   const WallSurfaces s = wallSurfaces(world.walls(), world.meshes(), world.domain());
   ASSERT_EQ(f.data->GetNumberOfPolys(), static_cast<vtkIdType>(s.polygons.size()));
@@ -219,7 +220,7 @@ TEST_F(VtkOutput, WallsAsTheirSurfaces) {
   EXPECT_NE(world.walls()[1].torque.norm(), 0.0);
 }
 
-TEST_F(VtkOutput, CollectionsListTheFramesAndAnEmptyNetworkKeepsItsArrays) {
+TEST_P(VtkOutput, CollectionsListTheFramesAndAnEmptyNetworkKeepsItsArrays) {
   World apart = smallScene();
   for (std::size_t i = 0; i < apart.particles().size(); ++i) apart.particles().position[i] = Vec3(0.0, -2.4e-3 + 1.6e-3 * i, 0.8e-3);
   apart.computeForces();
@@ -236,6 +237,11 @@ TEST_F(VtkOutput, CollectionsListTheFramesAndAnEmptyNetworkKeepsItsArrays) {
   EXPECT_NE(text.str().find("file=\"apart_particles_00000.vtp\""), std::string::npos);
   EXPECT_NE(text.str().find("file=\"apart_particles_00001.vtp\""), std::string::npos);
 }
+
+INSTANTIATE_TEST_SUITE_P(Compressions, VtkOutput, testing::Values(VtkCompression::ZLib, VtkCompression::LZ4, VtkCompression::None),
+                         [](const testing::TestParamInfo<VtkCompression>& info) {
+                           return info.param == VtkCompression::ZLib ? "zlib" : info.param == VtkCompression::LZ4 ? "lz4" : "none";
+                         });
 
 }  // namespace
 }  // namespace sqdem

@@ -186,9 +186,9 @@ void VtkSeries::write(Series& series, double time, const PolyData& frame, const 
   const std::string file = stem + (ranks.size() > 1 ? ".pvtp" : ".vtp");
   series.frames.emplace_back(time, file);
   if (ranks.size() > 1) {
-    writeVtkPiece(frame, directory_ / file, ranks.rank(), ranks.size());
+    writeVtkPiece(frame, directory_ / file, ranks.rank(), ranks.size(), options_.compression);
   } else if (ranks.rank() == 0) {
-    writeVtp(frame, directory_ / file);
+    writeVtp(frame, directory_ / file, options_.compression);
   }
   if (ranks.rank() != 0) return;
   // The collection, by hand: VTK has no .pvd writer outside ParaView.

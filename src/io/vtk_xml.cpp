@@ -87,33 +87,41 @@ vtkSmartPointer<vtkPolyData> toVtk(const PolyData& data) {
   return poly;
 }
 
-/// The output's encoding: appended raw binary after the XML header, zlib level 1, 64-bit headers.
+/// The output's encoding: appended raw binary after the XML header, compressed in blocks (zlib at
+/// level 1, LZ4 at its default, or none), 64-bit headers.
 template <typename Writer>
-void encode(Writer& writer) {
+void encode(Writer& writer, VtkCompression compression) {
   writer.SetDataModeToAppended();
   writer.EncodeAppendedDataOff();
-  writer.SetCompressorTypeToZLib();
-  writer.SetCompressionLevel(1);
+  switch (compression) {
+    case VtkCompression::ZLib:
+      writer.SetCompressorTypeToZLib();
+      writer.SetCompressionLevel(1);
+      break;
+    case VtkCompression::LZ4: writer.SetCompressorTypeToLZ4(); break;
+    case VtkCompression::None: writer.SetCompressorTypeToNone(); break;
+  }
   writer.SetBlockSize(blockSize);
   writer.SetHeaderTypeToUInt64();
 }
 
 }  // namespace
 
-void writeVtp(const PolyData& data, const std::filesystem::path& file) {
+void writeVtp(const PolyData& data, const std::filesystem::path& file, VtkCompression compression) {
   writeFileAtomically(file, [&](const std::filesystem::path& temporary) {
     vtkNew<vtkXMLPolyDataWriter> writer;
     writer->SetInputData(toVtk(data));
-    encode(*writer);
+    encode(*writer, compression);
     writer->SetFileName(temporary.string().c_str());
     if (writer->Write() != 1) throw std::runtime_error("VTK could not write '" + file.string() + "'");
   });
 }
 
-void writeVtkPiece(const PolyData& data, const std::filesystem::path& summary, int piece, int pieces) {
+void writeVtkPiece(const PolyData& data, const std::filesystem::path& summary, int piece, int pieces,
+                   VtkCompression compression) {
   vtkNew<vtkXMLPPolyDataWriter> writer;
   writer->SetInputData(toVtk(data));
-  encode(*writer);
+  encode(*writer, compression);
   writer->SetFileName(summary.string().c_str());
   writer->SetNumberOfPieces(pieces);
   writer->SetStartPiece(piece);

@@ -677,7 +677,7 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
   if (const YAML::Node out = root["output"]) {
     r.allowOnly(out, "output",
                 {"frames", "log_every", "contacts", "surface_resolution", "checkpoint_every_steps", "checkpoint_every_minutes", "energy", "compression",
-                 "sphere_orientation"});
+                 "sphere_orientation", "vtk_compression"});
     scene.output.frames = static_cast<std::size_t>(r.integer(out, "frames", "output", 0.0, 1e5, 20.0));
     scene.output.logEvery = static_cast<std::size_t>(r.integer(out, "log_every", "output", 0.0, 1e12, 0.0));
     scene.output.contacts = r.flag(out, "contacts", "output", true);
@@ -695,6 +695,9 @@ Scene parseScene(const std::string& path, const YAML::Node& root) {
     }
     scene.output.energy = r.flag(out, "energy", "output", false);
     scene.output.sphereOrientation = r.flag(out, "sphere_orientation", "output", false);
+    scene.output.vtkCompression = r.choice(out, "vtk_compression", "output",
+                                           {{"zlib", VtkCompression::ZLib}, {"lz4", VtkCompression::LZ4}, {"none", VtkCompression::None}},
+                                           VtkCompression::ZLib);
     for (std::size_t k = 0; scene.output.energy && k < scene.interactions.size(); ++k) {
       if (!storesEnergy(scene.interactions[k].normal)) {
         r.fail(out["energy"], "output.energy",

@@ -91,7 +91,7 @@ double kineticEnergyRatio(const World& world, const Vec3& gravity, double veloci
 RunReport runStages(const Scene& scene, World& world, const RunPlan& plan, const RunProgress& start,
                     const RunOutput& output, RunObserver& observer, const volatile std::sig_atomic_t& stop) {
   const bool fresh = start.totalSteps == 0 && start.stage == 0 && start.stepInStage == 0;
-  VtkSeries vtk(output.directory, output.name, {scene.output.contacts, plan.surfaceResolution});
+  VtkSeries vtk(output.directory, output.name, {scene.output.contacts, plan.surfaceResolution, scene.output.vtkCompression});
   RunLog log(output.directory / (output.name + ".csv"), world, scene.output.compressionWall);
   std::optional<CompressionRecord> compression;
   if (scene.output.compressionWall) compression.emplace();

@@ -35,6 +35,7 @@
 #include <vector>
 
 #include "sqdem/io/poly_data.hpp"
+#include "sqdem/io/vtk_xml.hpp"
 #include "sqdem/world/world.hpp"
 
 namespace sqdem {
@@ -42,6 +43,7 @@ namespace sqdem {
 struct VtkOutputOptions {
   bool contacts = true;
   int surfaceResolution = 0;  ///< N of the particles' surfaces; 0: not written
+  VtkCompression compression = VtkCompression::ZLib;
 };
 
 class VtkSeries {

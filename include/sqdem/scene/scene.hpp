@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "sqdem/io/vtk_xml.hpp"
+
 #include "sqdem/mechanics/elliptic.hpp"
 #include "sqdem/interaction/contact_model.hpp"
 #include "sqdem/geometry/domain.hpp"
@@ -137,6 +139,7 @@ struct OutputSpec {
   double checkpointMinutes = 10.0;    ///< ... and every M wall-clock minutes (0: off)
   bool energy = false;          ///< keep an energy ledger (world/energy_ledger.hpp) and log it
   bool sphereOrientation = false;  ///< advance spheres' orientations (World::setSphereOrientations)
+  VtkCompression vtkCompression = VtkCompression::ZLib;  ///< of the .vtp frames
   std::optional<std::size_t> compressionWall;  ///< the pressing plate: compression_report.hpp
 };
 
