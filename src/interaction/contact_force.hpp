@@ -19,12 +19,16 @@ inline NormalContact sizedContact(const ContactModel& model, const ContactKinema
   return c;
 }
 
+/// R* = rA rB / (rA + rB) of the volume-equivalent spheres (m; a wall: rA).
+inline double reducedRadius(const ContactKinematics& motion) {
+  return motion.volumeRadiusB > 0.0 ? motion.volumeRadiusA * motion.volumeRadiusB / (motion.volumeRadiusA + motion.volumeRadiusB)
+                                    : motion.volumeRadiusA;
+}
+
 /// The contact of the volume-equivalent spheres: a circle, Ri = Rj = R*, Rc = R*/2.
 inline NormalContact circularContact(const ContactModel& model, const ContactKinematics& motion) {
   NormalContact c = sizedContact(model, motion);
-  const double Rstar = motion.volumeRadiusB > 0.0
-                           ? motion.volumeRadiusA * motion.volumeRadiusB / (motion.volumeRadiusA + motion.volumeRadiusB)
-                           : motion.volumeRadiusA;
+  const double Rstar = reducedRadius(motion);
   c.radii = {.Ri = Rstar, .Rj = Rstar, .cosOmega = 1.0, .Rc = 0.5 * Rstar};
   c.factors = circularHertzFactors();
   return c;
@@ -109,9 +113,7 @@ struct RoundHertz {
     history.spring.setZero();
     return {.acting = false};
   }
-  const double rA = motion.volumeRadiusA, rB = motion.volumeRadiusB;
-  const double Rstar = rB > 0.0 ? rA * rB / (rA + rB) : rA;
-  const double a = std::sqrt(Rstar * overlap), E = model.effectiveModulus;
+  const double a = std::sqrt(reducedRadius(motion) * overlap), E = model.effectiveModulus;
   const double rootMassRadius = model.damping.scale() * std::sqrt(motion.effectiveMass * a);
   ContactForce out;
   out.normalStiffness = 2.0 * E * a;

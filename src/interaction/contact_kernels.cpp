@@ -229,11 +229,9 @@ void groupKernel(const std::vector<std::uint32_t>& members, const ContactModel& 
     [[maybe_unused]] double stored = 0.0;
     if (g.converged() && g.overlap > -range) {
       const ContactKinematics motion = kinematics<Kind>(scene, s, k, s.point[k]);
-      if constexpr (round(Kind) && std::is_same_v<Law, HertzLaw>) {  // its lean form; HertzLaw's energy needs no contact
+      NormalContact contact;  // what the law saw (HertzLaw's lean round form needs none, nor does its energy)
+      if constexpr (round(Kind) && std::is_same_v<Law, HertzLaw>) {
         force = detail::roundHertzForce(model, roundHertz, motion, g.overlap, g.normal, history, scene.dt);
-        if constexpr (Ledger) {
-          if (force.acting) stored = storedEnergy(law, NormalContact{}, g.overlap, history.normal, force.normal - force.normalDamping);
-        }
       } else {
         const LawGeometry view = [&] {
           if constexpr (round(Kind)) {
@@ -243,10 +241,11 @@ void groupKernel(const std::vector<std::uint32_t>& members, const ContactModel& 
                           : detail::lawGeometry(model, g, motion);
           }
         }();
+        contact = view.contact;
         force = detail::contactForce(model, law, view, motion, history, scene.dt);
-        if constexpr (Ledger) {
-          if (force.acting) stored = storedEnergy(law, view.contact, g.overlap, history.normal, force.normal - force.normalDamping);
-        }
+      }
+      if constexpr (Ledger) {
+        if (force.acting) stored = storedEnergy(law, contact, g.overlap, history.normal, force.normal - force.normalDamping);
       }
       invalid += !force.valid;
       deep += force.acting && g.overlap > 0.5 * motion.volumeRadiusA;

@@ -139,10 +139,10 @@ class Interactions {
   void compute(const InteractionScene& scene, std::vector<double>& speedBound, ContactStatistics& statistics);
   /// Per particle: F = m (g - c v) plus its contacts' loads, and the torques; per wall this
   /// process's share of its load (walls.size() sums, reset here). remote[m]: the load of the
-  /// m-th contact of setRemoteContacts. kick > 0: each particle then takes a kick of that half
-  /// step (integrator.hpp) in the same pass, the step's closing kick without a pass of its own.
+  /// m-th contact of setRemoteContacts. halfStep > 0: each particle then takes a kick of that
+  /// half step (integrator.hpp) in the same pass, the step's closing kick without a pass of its own.
   void reduce(ParticleStore& particles, const Vec3& gravity, double drag, const std::vector<Wall>& walls,
-              std::vector<WallLoadSum>& wallLoads, std::span<const LoadOnB> remote = {}, double kick = 0.0);
+              std::vector<WallLoadSum>& wallLoads, std::span<const LoadOnB> remote = {}, double halfStep = 0.0);
 
   /// Migration (docs/architecture.md, "Ghosts"): the contacts whose A leaves this process
   /// (leaving[slot of A], written out by the caller) removed; `count` contacts that arrived with

@@ -19,12 +19,12 @@ enum class VtkCompression {
 };
 
 /// Throws std::runtime_error naming the file.
-void writeVtp(const PolyData& data, const std::filesystem::path& file, VtkCompression compression = VtkCompression::ZLib);
+void writeVtp(const PolyData& data, const std::filesystem::path& file, VtkCompression compression);
 
 /// Piece `piece` of `pieces` of a frame (a rank's share), written with the same encoding by VTK's
 /// parallel writer (vtkXMLPPolyDataWriter) as `<stem>_<piece>.vtp` beside `summary`, the .pvtp
 /// that lists the pieces, which the writer of piece 0 writes too. Throws std::runtime_error.
 void writeVtkPiece(const PolyData& data, const std::filesystem::path& summary, int piece, int pieces,
-                   VtkCompression compression = VtkCompression::ZLib);
+                   VtkCompression compression);
 
 }  // namespace sqdem

@@ -14,7 +14,7 @@
 //   tabulated: F_bar t^6, A_bar t^4 and the axis ratio g, with delta_bar_d and the pull-off
 //   F_bar_min per lambda;
 // each interpolated by 4-point Lagrange polynomials (bicubic). The nodes are the exact curve
-// (EllipticJkr with JkrCurve::Exact). Error against the exact curve, measured over 2e5 random
+// (EllipticJkr with JkrCurve::Exact). Error against the exact curve, measured over 2e4 random
 // points (tests/jkr_test.cpp): stated in docs/contact_laws.md.
 
 #include <vector>

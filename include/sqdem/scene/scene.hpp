@@ -12,7 +12,6 @@
 #include <vector>
 
 #include "sqdem/io/vtk_xml.hpp"
-
 #include "sqdem/mechanics/elliptic.hpp"
 #include "sqdem/interaction/contact_model.hpp"
 #include "sqdem/geometry/domain.hpp"
