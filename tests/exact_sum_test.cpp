@@ -142,5 +142,31 @@ TEST(ExactSum, CarriesAfterManyAdditions) {
   EXPECT_EQ(s.value(), reference({evens * 1099511627776.0, odds * 1.5 + evens * 0.5}));  // each term exact
 }
 
+TEST(ExactSum, MergesOfMergesAndRankFormsStayExact) {
+  // A step's wall loads: threads' shares of addends in a narrow range of one sign (a negative
+  // total), merged into a running sum again and again, with rank forms (limbs, fromLimbs) mixed
+  // in: the merged count of pending additions must force the carries in time.
+  std::mt19937_64 rng(13);
+  std::uniform_real_distribution<double> load(-2e-3, 5e-4);
+  std::vector<double> all;
+  ExactSum running;
+  for (int round = 0; round < 300; ++round) {
+    std::array<ExactSum, 2> shares;
+    for (int i = 0; i < 40; ++i) {
+      const double x = load(rng);
+      all.push_back(x);
+      shares[i % 2].add(x);
+    }
+    running += shares[0];
+    running += round % 3 == 0 ? ExactSum::fromLimbs(shares[1].limbs(), 0.0) : shares[1];
+    if (round % 50 == 0) running = ExactSum::fromLimbs(running.limbs(), 0.0);
+  }
+  EXPECT_LT(running.value(), 0.0);
+  EXPECT_EQ(running.value(), reference(all));
+  ExactSum negated;
+  for (double x : all) negated.add(-x);
+  EXPECT_EQ(negated.value(), -reference(all));
+}
+
 }  // namespace
 }  // namespace sqdem

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <span>
 #include <variant>
 
 #include "contact_force.hpp"
@@ -17,10 +18,6 @@ namespace {
 /// How many contacts ahead a group kernel prefetches (ContactStore::prefetch): a few us ahead for
 /// spheres, tens of us for ellipsoids; 24 contacts' records (~6-11 kB) stay well inside L1.
 constexpr std::ptrdiff_t prefetchDistance = 24;
-/// The contacts a thread takes at a time. It prefetches only within its chunk: the next chunk may
-/// be another thread's, whose writes would pull the prefetched lines back and forth between the
-/// cores (measured: 2 threads slower than 1 on a dense bed of spheres when it prefetched across).
-constexpr std::ptrdiff_t chunk = 256;
 
 Pose poseOf(const ParticleStore& p, std::uint32_t i) { return {p.position[i], p.orientation[i]}; }
 
@@ -181,10 +178,10 @@ ContactModel asRun(ContactModel model, PairKind kind) {
 }
 
 /// One group: detect, then (within the law's range) the law; the step's statistics; with the
-/// Ledger, each contact's energy (ContactEnergy). Called by every thread of the computation's
-/// parallel region: the contacts are shared out among them.
+/// Ledger, each contact's energy (ContactEnergy). Every thread of the team runs it on its own
+/// members (Interactions::memberShare).
 template <PairKind Kind, NormalLawComponent Law, bool Ledger>
-void groupKernel(const std::vector<std::uint32_t>& members, const ContactModel& pairModel, const Law& law,
+void groupKernel(std::span<const std::uint32_t> members, const ContactModel& pairModel, const Law& law,
                  const InteractionScene& scene, const std::vector<double>& speedBound, std::vector<detail::WarmSkip>* skips,
                  ContactStore& s, ContactStatistics& statistics) {
   const ContactModel model = asRun(pairModel, Kind);
@@ -194,10 +191,9 @@ void groupKernel(const std::vector<std::uint32_t>& members, const ContactModel& 
   long long calls = 0, iterations = 0, confirmations = 0, failures = 0, deep = 0, lost = 0, invalid = 0;
   long long byStatus[contactStatusCount] = {};
   const auto count = static_cast<std::ptrdiff_t>(members.size());
-#pragma omp for schedule(dynamic, chunk) nowait
   for (std::ptrdiff_t m = 0; m < count; ++m) {
     const std::uint32_t k = members[m];
-    if (m % chunk + prefetchDistance < chunk && m + prefetchDistance < count) s.prefetch(members[m + prefetchDistance]);
+    if (m + prefetchDistance < count) s.prefetch(members[m + prefetchDistance]);
     [[maybe_unused]] const detail::ContactLoad before = Ledger ? detail::ContactLoad{s.normal[k], s.force[k], s.load[k]}
                                                                : detail::ContactLoad{};
     [[maybe_unused]] const Vec3 pointBefore = Ledger ? s.point[k] : Vec3::Zero();
@@ -300,7 +296,7 @@ void groupKernel(const std::vector<std::uint32_t>& members, const ContactModel& 
 /// The group's kernel, with the ledger when the store keeps one (only laws that state their
 /// stored energy can: the scene loader refuses the others).
 template <PairKind Kind, NormalLawComponent Law>
-void runGroup(const std::vector<std::uint32_t>& members, const ContactModel& model, const Law& law,
+void runGroup(std::span<const std::uint32_t> members, const ContactModel& model, const Law& law,
               const InteractionScene& scene, const std::vector<double>& speedBound, std::vector<detail::WarmSkip>* skips,
               ContactStore& s, ContactStatistics& statistics) {
   if constexpr (StoredEnergyLaw<Law>) {
@@ -310,7 +306,7 @@ void runGroup(const std::vector<std::uint32_t>& members, const ContactModel& mod
 }
 
 template <NormalLawComponent Law>
-void runGroup(PairKind kind, const std::vector<std::uint32_t>& members, const ContactModel& model, const Law& law,
+void runGroup(PairKind kind, std::span<const std::uint32_t> members, const ContactModel& model, const Law& law,
               const InteractionScene& scene, const std::vector<double>& speedBound, std::vector<detail::WarmSkip>* skips,
               ContactStore& s, ContactStatistics& statistics) {
   const auto run = [&]<PairKind Kind>() { runGroup<Kind>(members, model, law, scene, speedBound, skips, s, statistics); };
@@ -327,33 +323,28 @@ void runGroup(PairKind kind, const std::vector<std::uint32_t>& members, const Co
 
 }  // namespace
 
-void Interactions::compute(const InteractionScene& scene, std::vector<double>& speedBound, ContactStatistics& statistics) {
-  const ParticleStore& p = scene.particles;
-  const auto n = static_cast<std::ptrdiff_t>(p.slots());  // ghosts too
-  // Only the iterative kinds cull separated pairs by the particles' speed bounds.
-  const bool bounded = std::ranges::any_of(groups_, [](const Group& g) { return !round(g.kind) && !withWall(g.kind); });
+void Interactions::beginCompute(const InteractionScene& scene) {
   // Records only where pairs are solved (round kinds and walls keep none): made after every
   // change of the store (storeChanged empties them), so a record is always its slot's.
-  const bool recording = bounded && scene.detector.confirmWarm;
-  if (!recording) warmSkips_.clear();  // none kept while not recording, so none goes stale
-  if (recording && warmSkips_.size() != store_.size()) warmSkips_.assign(store_.size(), {});
+  if (!recording(scene)) warmSkips_.clear();  // none kept while not recording, so none goes stale
+  if (recording(scene) && warmSkips_.size() != store_.size()) warmSkips_.assign(store_.size(), {});
   interactingListed_ = false;  // the acting flags are written now
-  std::vector<detail::WarmSkip>* skips = recording ? &warmSkips_ : nullptr;
-  // One parallel region per computation: the groups' loops do not wait for each other (each
-  // writes only its own contacts), so a step pays one fork and one join here.
-#pragma omp parallel
-  {
-    if (bounded) {
-#pragma omp for schedule(static)
-      for (std::ptrdiff_t i = 0; i < n; ++i) {
-        speedBound[i] = p.velocity[i].norm() + p.angularVelocity[i].norm() * p.boundingRadius[i];
-      }
-    }
-    for (const Group& group : groups_) {
-      const ContactModel& model = scene.models[group.model];
-      std::visit([&](const auto& law) { runGroup(group.kind, group.members, model, law, scene, speedBound, skips, store_, statistics); },
-                 model.normal);
-    }
+}
+
+bool Interactions::cullsBySpeed() const {
+  return std::ranges::any_of(groups_, [](const Group& g) { return !round(g.kind) && !withWall(g.kind); });
+}
+
+void Interactions::compute(const InteractionScene& scene, ContactStatistics& statistics) {
+  std::vector<detail::WarmSkip>* skips = recording(scene) ? &warmSkips_ : nullptr;
+  const std::vector<double>& speedBound = scene.particles.speedBound;
+  // The groups' loops do not wait for each other: each writes only its own contacts.
+  const auto owned = static_cast<std::ptrdiff_t>(scene.particles.size());
+  for (const Group& group : groups_) {
+    const ContactModel& model = scene.models[group.model];
+    const std::span<const std::uint32_t> members = memberShare(group, owned, scene.split);
+    std::visit([&](const auto& law) { runGroup(group.kind, members, model, law, scene, speedBound, skips, store_, statistics); },
+               model.normal);
   }
 }
 

@@ -90,10 +90,6 @@ void Interactions::storeChanged() {
   keyOrder_.resize(store_.size());
   std::iota(keyOrder_.begin(), keyOrder_.end(), 0u);
   std::sort(keyOrder_.begin(), keyOrder_.end(), [&](std::uint32_t x, std::uint32_t y) { return store_.key(x) < store_.key(y); });
-  wallContacts_.clear();
-  for (const std::uint32_t k : keyOrder_) {
-    if (store_.onWall(k)) wallContacts_.push_back(k);
-  }
 }
 
 const std::vector<std::uint32_t>& Interactions::listActing() const {
@@ -127,6 +123,21 @@ void Interactions::regroup(const InteractionScene& scene) {
   for (std::uint32_t k = 0; k < store_.size(); ++k) members[{kindOf(scene, store_, k), modelIndex(scene, store_, k)}].push_back(k);
   groups_.clear();
   for (auto& [type, list] : members) groups_.push_back({type.first, type.second, std::move(list)});
+  bySlot_ = std::ranges::is_sorted(store_.a);
+}
+
+std::span<const std::uint32_t> Interactions::memberShare(const Group& group, std::ptrdiff_t owned, const TeamSplit* split) const {
+  const std::span<const std::uint32_t> all(group.members);
+  if (!bySlot_) {
+    const Share even = threadShare(static_cast<std::ptrdiff_t>(all.size()));
+    return all.subspan(even.begin, even.end - even.begin);
+  }
+  const Share particles = split != nullptr ? split->share(owned) : threadShare(owned);
+  const auto from = [&](std::ptrdiff_t slot) {  // the first member whose A is at slot or after
+    return std::partition_point(all.begin(), all.end(), [&](std::uint32_t k) { return store_.a[k] < slot; }) - all.begin();
+  };
+  const std::ptrdiff_t begin = from(particles.begin), end = from(particles.end);
+  return all.subspan(begin, end - begin);
 }
 
 void Interactions::indexInvolvement(std::size_t owned, const std::vector<std::uint32_t>& ghostOwner) {
@@ -176,8 +187,7 @@ std::size_t Interactions::bytes() const {
   ContactStore::forEachArray(store_, [&](const auto& array) { total += array.capacity() * sizeof(array[0]); });
   for (const Group& g : groups_) total += g.members.capacity() * sizeof(std::uint32_t);
   total += warmSkips_.capacity() * sizeof(detail::WarmSkip);
-  total += (keyOrder_.capacity() + involvementStart_.capacity() + involvement_.capacity() + interacting_.capacity() +
-            wallContacts_.capacity()) *
+  total += (keyOrder_.capacity() + involvementStart_.capacity() + involvement_.capacity() + interacting_.capacity()) *
            sizeof(std::uint32_t);
   return total;
 }

@@ -21,11 +21,12 @@ LoadOnB Interactions::loadOnB(std::uint32_t k, const ParticleStore& p) const {
 }
 
 void Interactions::reduce(ParticleStore& p, const Vec3& gravity, double drag, const std::vector<Wall>& walls,
-                          std::vector<WallLoadSum>& wallLoads, std::span<const LoadOnB> remote, double halfStep) {
+                          std::vector<WallLoadSum>& wallLoads, std::span<const LoadOnB> remote, double halfStep,
+                          const TeamSplit& split) {
   const ContactStore& s = store_;
   const auto n = static_cast<std::ptrdiff_t>(p.size());
-#pragma omp parallel for schedule(static)
-  for (std::ptrdiff_t i = 0; i < n; ++i) {
+  const Share particles = split.share(n);
+  for (std::ptrdiff_t i = particles.begin; i < particles.end; ++i) {
     // Summed in registers (the stores' arrays might alias for the compiler), in the same order.
     Vec3 force = p.mass[i] * (gravity - drag * p.velocity[i]);
     Vec3 torque = Vec3::Zero();
@@ -52,21 +53,32 @@ void Interactions::reduce(ParticleStore& p, const Vec3& gravity, double drag, co
     p.torque[i] = torque;
     if (halfStep > 0.0) kick(p, static_cast<std::size_t>(i), halfStep);
   }
-  // The walls' shares, in key order.
-  wallLoads.assign(walls.size(), WallLoadSum{});
-  for (const std::uint32_t k : wallContacts_) {
-    if (!s.acting[k]) continue;
-    const std::uint32_t w = s.b[k] & ~wallFlag;
-    const Vec3 torque = (s.point[k] - s.wallImage[k] - walls[w].reference()).cross(s.force[k]) +
-                        (s.withRolling ? s.moment[k] : Vec3::Zero());
-    const Vec3 elastic = s.force[k] - s.load[k].damping * s.normal[k];
-    std::array<ExactSum, 10>& part = wallLoads[w].part;
-    for (int d = 0; d < 3; ++d) {
-      part[WallLoadSum::force + d].add(s.force[k](d));
-      part[WallLoadSum::torque + d].add(torque(d));
-      part[WallLoadSum::elasticForce + d].add(elastic(d));
+  // The walls' shares: each thread sums the wall contacts it computed (memberShare: their records
+  // are in its core's cache), then adds its sums to the walls' (exact sums: in any order and any
+  // split, the same bits).
+  thread_local std::vector<WallLoadSum> mine;  // kept between steps: cleared in the limbs touched
+  mine.resize(walls.size());
+  for (WallLoadSum& load : mine) load.clear();
+  for (const Group& group : groups_) {
+    if (!withWall(group.kind)) continue;
+    for (const std::uint32_t k : memberShare(group, n, &split)) {
+      if (!s.acting[k]) continue;
+      const std::uint32_t w = s.b[k] & ~wallFlag;
+      const Vec3 torque = (s.point[k] - s.wallImage[k] - walls[w].reference()).cross(s.force[k]) +
+                          (s.withRolling ? s.moment[k] : Vec3::Zero());
+      const Vec3 elastic = s.force[k] - s.load[k].damping * s.normal[k];
+      std::array<ExactSum, 10>& part = mine[w].part;
+      for (int d = 0; d < 3; ++d) {
+        part[WallLoadSum::force + d].add(s.force[k](d));
+        part[WallLoadSum::torque + d].add(torque(d));
+        part[WallLoadSum::elasticForce + d].add(elastic(d));
+      }
+      part[WallLoadSum::stiffness].add(s.load[k].stiffness);
     }
-    part[WallLoadSum::stiffness].add(s.load[k].stiffness);
+  }
+#pragma omp critical(sqdem_wall_loads)
+  for (std::size_t w = 0; w < walls.size(); ++w) {
+    for (std::size_t j = 0; j < mine[w].part.size(); ++j) wallLoads[w].part[j] += mine[w].part[j];
   }
 }
 

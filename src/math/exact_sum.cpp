@@ -9,34 +9,56 @@ namespace {
 using Limbs = std::array<std::int64_t, ExactSum::limbCount>;
 __extension__ using Wide = unsigned __int128;  // GCC's and Clang's 128-bit integer
 
-/// Every limb below the top one brought into [0, 2^32), its carry moved up.
-void propagateCarries(Limbs& limb) {
-  for (int c = 0; c + 1 < ExactSum::limbCount; ++c) {
-    const std::int64_t carry = limb[c] >> 32;  // floor division: the digit left is in [0, 2^32)
-    limb[c] -= carry * (std::int64_t{1} << 32);
-    limb[c + 1] += carry;
+/// The carries of limbs [lo, hi) moved up, and on while one is left: every limb a balanced digit
+/// in [-2^31, 2^31) (the sum's sign is its top non-zero digit's). Returns the end of the limbs
+/// that may now be non-zero.
+int propagateCarries(Limbs& limb, int lo, int hi) {
+  std::int64_t carry = 0;
+  int c = lo;
+  for (; c < ExactSum::limbCount && (c < hi || carry != 0); ++c) {
+    const std::int64_t v = limb[c] + carry;
+    carry = (v + (std::int64_t{1} << 31)) >> 32;  // floor division: the digit left is balanced
+    limb[c] = v - carry * (std::int64_t{1} << 32);
   }
+  return c;  // a carry out of the top limb would need a sum beyond 2^1100: none of doubles
 }
 
 }  // namespace
 
 void ExactSum::normalise() {
-  propagateCarries(limb_);
+  if (lo_ < hi_) hi_ = propagateCarries(limb_, lo_, hi_);
   pending_ = 0;
 }
 
 ExactSum& ExactSum::operator+=(const ExactSum& other) {
-  normalise();
-  const Limbs theirs = other.limbs();
-  for (int c = 0; c < limbCount; ++c) limb_[c] += theirs[c];
-  pending_ = 2;  // each digit now below 2^33: two additions' worth
   nonFinite_ += other.nonFinite_;
+  if (other.lo_ >= other.hi_) return *this;
+  if (pending_ > carryEvery - 1 - other.pending_) normalise();
+  if (pending_ > carryEvery - 1 - other.pending_) {  // other at its full count: its propagated form
+    const Limbs theirs = other.limbs();
+    for (int c = 0; c < limbCount; ++c) limb_[c] += theirs[c];
+    hi_ = limbCount;
+    pending_ += 1;  // balanced digits: within one addition's worth
+  } else {
+    for (int c = other.lo_; c < other.hi_; ++c) limb_[c] += other.limb_[c];
+    hi_ = std::max(hi_, other.hi_);
+    pending_ += other.pending_ + 1;
+  }
+  lo_ = std::min(lo_, other.lo_);
   return *this;
+}
+
+void ExactSum::clear() {
+  if (lo_ < hi_) std::fill(limb_.begin() + lo_, limb_.begin() + hi_, 0);
+  nonFinite_ = 0.0;
+  pending_ = 0;
+  lo_ = limbCount;
+  hi_ = 0;
 }
 
 std::array<std::int64_t, ExactSum::limbCount> ExactSum::limbs() const {
   Limbs limb = limb_;
-  propagateCarries(limb);
+  if (lo_ < hi_) propagateCarries(limb, lo_, hi_);
   return limb;
 }
 
@@ -45,20 +67,32 @@ ExactSum ExactSum::fromLimbs(std::span<const std::int64_t, limbCount> limbs, dou
   std::copy(limbs.begin(), limbs.end(), s.limb_.begin());
   s.nonFinite_ = nonFinite;
   s.pending_ = carryEvery;  // a sum of many ranks' digits: propagate before the next addition
+  for (int c = 0; c < limbCount; ++c) {
+    if (limbs[c] != 0) {
+      s.lo_ = std::min(s.lo_, c);
+      s.hi_ = c + 1;
+    }
+  }
   return s;
 }
 
 double ExactSum::value() const {
   if (nonFinite_ != 0.0 || std::isnan(nonFinite_)) return nonFinite_;
-  Limbs limb = limbs();
-  const bool negative = limb[limbCount - 1] < 0;
-  if (negative) {
-    for (std::int64_t& d : limb) d = -d;
-    propagateCarries(limb);
+  if (lo_ >= hi_) return 0.0;
+  Limbs limb = limb_;
+  int top = propagateCarries(limb, lo_, hi_) - 1;
+  while (top >= lo_ && limb[top] == 0) --top;
+  if (top < lo_) return 0.0;
+  // The magnitude in digits [0, 2^32) (floor carries: the top digit stays positive).
+  const bool negative = limb[top] < 0;
+  for (int c = lo_; c < top; ++c) {
+    const std::int64_t d = negative ? -limb[c] : limb[c];
+    const std::int64_t carry = d >> 32;
+    limb[c] = d - carry * (std::int64_t{1} << 32);
+    limb[c + 1] += negative ? -carry : carry;
   }
-  int top = limbCount - 1;
-  while (top >= 0 && limb[top] == 0) --top;
-  if (top < 0) return 0.0;
+  if (negative) limb[top] = -limb[top];
+  while (limb[top] == 0) --top;  // a borrow may have emptied the top digit (not the lowest: the sum is not 0)
   // The largest double is below 2^1024, bit 2098 of the accumulator, in limb 65.
   if (top > 65) return negative ? -HUGE_VAL : HUGE_VAL;
   // The three digits from the top one (at least 65 significant bits when the top is limb 2 or

@@ -5,10 +5,9 @@
 namespace sqdem {
 
 bool NeighbourList::needsRebuild(const ParticleStore& particles) const {
-  if (reference_.size() != particles.size()) return true;
-  const double limit = 0.25 * skin_ * skin_;
+  if (!covers(particles.size())) return true;
   for (std::size_t i = 0; i < particles.size(); ++i) {
-    if ((particles.position[i] - reference_[i]).squaredNorm() > limit) return true;
+    if (outOfSkin(i, particles.position[i])) return true;
   }
   return false;
 }

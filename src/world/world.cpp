@@ -1,6 +1,7 @@
 #include "sqdem/world/world.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
@@ -12,6 +13,7 @@
 #include "sqdem/mechanics/damping.hpp"
 #include "sqdem/mechanics/elliptic.hpp"
 #include "sqdem/math/permutation.hpp"
+#include "team.hpp"
 
 namespace sqdem {
 namespace {
@@ -170,18 +172,15 @@ bool World::wallsMovedHalfSkin() const {
   return false;
 }
 
-void World::reduceWallLoads() {
-  for (std::size_t w = 0; w < walls_.size(); ++w) {
-    std::array<ExactSum, 10>& part = wallLoads_[w].part;
-    communicator_->sum(part);
-    Wall& wall = walls_[w];
-    for (int d = 0; d < 3; ++d) {
-      wall.force(d) = part[WallLoadSum::force + d].value();
-      wall.torque(d) = part[WallLoadSum::torque + d].value();
-      wall.elasticForce(d) = part[WallLoadSum::elasticForce + d].value();
-    }
-    wall.stiffness = part[WallLoadSum::stiffness].value();
+void World::setWallLoad(std::size_t w) {
+  const std::array<ExactSum, 10>& part = wallLoads_[w].part;
+  Wall& wall = walls_[w];
+  for (int d = 0; d < 3; ++d) {
+    wall.force(d) = part[WallLoadSum::force + d].value();
+    wall.torque(d) = part[WallLoadSum::torque + d].value();
+    wall.elasticForce(d) = part[WallLoadSum::elasticForce + d].value();
   }
+  wall.stiffness = part[WallLoadSum::stiffness].value();
 }
 
 double World::ghostCutoff(const ParticleStore& p) const {
@@ -226,65 +225,143 @@ void World::rebalance() {
   ++rebalances_;
 }
 
-void World::computeForcesThenKick(double halfStep) {
+void World::requireModels() const {
   for (std::size_t k = 0; k < models_.size(); ++k) {
     if (!modelSet_[k]) throw std::logic_error("World: a material pair has no contact model");
   }
+}
+
+void World::computeForces() {
+  requireModels();
+  Team team;
+  team.run([&] {
+    team.master([&] { prepareForces(neighbours_.needsRebuild(particles_)); });
+    team.barrier();
+    if (!team.failed()) forcePhases(team, 0.0);
+  });
+  team.rethrow();
+  timing_.barrierWait += team.meanWait();
+  split_.rebalance(team.work());
+}
+
+void World::prepareForces(bool moved) {
   const auto start = Clock::now();
   const double ghostsBefore = timing_.ghosts;
-  ParticleStore& p = particles_;
-  if (communicator_->any(neighbours_.needsRebuild(p)) || wallsMovedHalfSkin()) {
+  if (communicator_->any(moved) || wallsMovedHalfSkin()) {
     rebuildNeighbours();
     buildCandidates();
   } else {
-    ghosts_.refresh(p, *communicator_);
+    ghosts_.refresh(particles_, *communicator_);
     timing_.ghosts += seconds(Clock::now() - start);
   }
+  wallLoads_.resize(walls_.size());
+  for (WallLoadSum& load : wallLoads_) load.clear();
+  interactions_.beginCompute(interactionScene());
+  timing_.broadPhase += seconds(Clock::now() - start) - (timing_.ghosts - ghostsBefore);
+}
 
-  const auto contactsStart = Clock::now();
-  timing_.broadPhase += seconds(contactsStart - start) - (timing_.ghosts - ghostsBefore);
-  interactions_.compute(interactionScene(), p.speedBound, statistics_);
-  const auto loadsStart = Clock::now();
-  timing_.contacts += seconds(loadsStart - contactsStart);
-  if (communicator_->size() > 1) remoteLoadsNow_ = remoteLoads_.exchange(interactions_, p, *communicator_);
-  const auto reduction = Clock::now();
-  timing_.ghosts += seconds(reduction - loadsStart);
-  interactions_.reduce(p, gravity_, viscousDamping_, walls_, wallLoads_, remoteLoadsNow_, halfStep);
-  reduceWallLoads();
-  forcesCurrent_ = true;
-  if (ledger_ && !ledger_->started) ledger_->start(*this);
-  timing_.reduction += seconds(Clock::now() - reduction);
+void World::forcePhases(Team& team, double halfStep) {
+  ParticleStore& p = particles_;
+  Clock::time_point phase;  // the master's clock
+  team.master([&] { phase = Clock::now(); });
+  if (interactions_.cullsBySpeed()) {  // every slot's bound (ghosts too) before a group culls by it
+    const Share slots = threadShare(static_cast<std::ptrdiff_t>(p.slots()));  // (ghosts too: a plain even share)
+    for (std::ptrdiff_t i = slots.begin; i < slots.end; ++i) {
+      p.speedBound[i] = p.velocity[i].norm() + p.angularVelocity[i].norm() * p.boundingRadius[i];
+    }
+    team.barrier();
+  }
+  const auto computing = Clock::now();
+  interactions_.compute(interactionScene(), statistics_);
+  team.addWork(seconds(Clock::now() - computing));
+  team.barrier();
+  const bool ranks = communicator_->size() > 1;
+  team.master([&] {
+    const auto now = Clock::now();
+    timing_.contacts += seconds(now - phase);
+    phase = now;
+    if (!ranks) return;
+    remoteLoadsNow_ = remoteLoads_.exchange(interactions_, p, *communicator_);
+    const auto exchanged = Clock::now();
+    timing_.ghosts += seconds(exchanged - phase);
+    phase = exchanged;
+  });
+  if (ranks) {  // the other ranks' loads are read by every thread
+    team.barrier();
+    if (team.failed()) return;
+  }
+  interactions_.reduce(p, gravity_, viscousDamping_, walls_, wallLoads_, remoteLoadsNow_, halfStep, split_);
+  team.barrier();
+  if (ranks) {  // the walls' shares summed over the ranks
+    team.master([&] {
+      for (WallLoadSum& load : wallLoads_) communicator_->sum(load.part);
+    });
+    team.barrier();
+    if (team.failed()) return;
+  }
+  const auto walls = static_cast<std::ptrdiff_t>(walls_.size());
+#pragma omp for schedule(static) nowait
+  for (std::ptrdiff_t w = 0; w < walls; ++w) setWallLoad(w);
+  team.barrier();
+  team.master([&] {
+    forcesCurrent_ = true;
+    if (ledger_ && !ledger_->started) ledger_->start(*this);
+    timing_.reduction += seconds(Clock::now() - phase);
+  });
 }
 
 void World::step() {
   if (!(dt_ > 0.0)) throw std::logic_error("World: time step not set");
   if (!forcesCurrent_) computeForces();
+  requireModels();
   const double h = dt_;
   ParticleStore& p = particles_;
-  const auto start = Clock::now();
   const auto n = static_cast<std::ptrdiff_t>(p.size());
-#pragma omp parallel for schedule(static)
-  for (std::ptrdiff_t i = 0; i < n; ++i) {
-    kick(p, i, 0.5 * h);
-    drift(p, i, h, turns_[p.shape[i]] != 0);
-  }
-  for (std::size_t k = 0; k < walls_.size(); ++k) {
-    Wall& w = walls_[k];
-    if (w.servo) w.velocity = servoVelocity(k) * w.plane.normal;
-    w.advance(h);
-  }
-  time_ += h;
-  timing_.integration += seconds(Clock::now() - start);
-  if (!ledger_) return computeForcesThenKick(0.5 * h);  // the closing kick in the reduction's pass
-  // The ledger accounts the step between the forces and the closing kick.
-  const std::vector<Wall> before = walls_;
-  computeForces();
-  ledger_->addStep(*this, before);
-  const auto kickStart = Clock::now();
-  const auto owned = static_cast<std::ptrdiff_t>(p.size());  // particles may have migrated
-#pragma omp parallel for schedule(static)
-  for (std::ptrdiff_t i = 0; i < owned; ++i) kick(p, i, 0.5 * h);
-  timing_.integration += seconds(Clock::now() - kickStart);
+  std::vector<Wall> wallsBefore;  // the ledger accounts the step between the forces and the closing kick
+  Team team;
+  std::atomic<bool> moved = false;  // some particle moved more than half the skin since the last build
+  Clock::time_point phase = Clock::now();  // the master's clock
+  team.run([&] {
+    bool mineMoved = false;
+    const Share particles = split_.share(n);
+    for (std::ptrdiff_t i = particles.begin; i < particles.end; ++i) {
+      kick(p, i, 0.5 * h);
+      drift(p, i, h, turns_[p.shape[i]] != 0);
+      mineMoved = mineMoved || neighbours_.outOfSkin(i, p.position[i]);
+    }
+    if (mineMoved) moved.store(true, std::memory_order_relaxed);
+    team.barrier();
+    team.master([&] {
+      for (std::size_t k = 0; k < walls_.size(); ++k) {
+        Wall& w = walls_[k];
+        if (w.servo) w.velocity = servoVelocity(k) * w.plane.normal;
+        w.advance(h);
+      }
+      time_ += h;
+      timing_.integration += seconds(Clock::now() - phase);
+      if (ledger_) wallsBefore = walls_;
+      prepareForces(moved.load(std::memory_order_relaxed) || !neighbours_.covers(p.size()));
+    });
+    team.barrier();
+    if (!team.failed()) forcePhases(team, ledger_ ? 0.0 : 0.5 * h);  // without the ledger, the closing kick in the reduction's pass
+    if (ledger_) {  // (forcePhases ended with a barrier: the master's serial parts follow each other)
+      team.master([&] {
+        ledger_->addStep(*this, wallsBefore);
+        phase = Clock::now();
+      });
+      team.barrier();
+      const auto owned = static_cast<std::ptrdiff_t>(p.size());  // particles may have migrated
+      if (!team.failed()) {
+        const Share mine = split_.share(owned);
+        for (std::ptrdiff_t i = mine.begin; i < mine.end; ++i) kick(p, i, 0.5 * h);
+      }
+      team.barrier();
+      team.master([&] { timing_.integration += seconds(Clock::now() - phase); });
+    }
+  });
+  team.rethrow();
+  timing_.barrierWait += team.meanWait();
+  split_.rebalance(team.work());  // the next step's runs
 }
 
 void World::enableEnergyLedger() {

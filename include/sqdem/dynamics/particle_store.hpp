@@ -32,7 +32,7 @@ struct ParticleStore {
   std::vector<Vec3> inertia;            ///< principal moments in the body frame (kg m^2)
   std::vector<double> boundingRadius;   ///< of its shape (m)
   /// |v| + |w| R_bound (m/s), how fast any point of it moves, this step; kept only when a scene's
-  /// detectors cull separated pairs by it (Interactions::compute), 0 otherwise.
+  /// detectors cull separated pairs by it (Interactions::cullsBySpeed), 0 otherwise.
   std::vector<double> speedBound;
 
   /// Slots [0, size()) hold the particles this process owns, slots [size(), slots()) their

@@ -23,6 +23,7 @@
 #include "sqdem/interaction/contact_model.hpp"
 #include "sqdem/interaction/contact_store.hpp"
 #include "sqdem/interaction/pair_kind.hpp"
+#include "sqdem/interaction/thread_share.hpp"
 #include "sqdem/interaction/warm_skip.hpp"
 #include "sqdem/math/exact_sum.hpp"
 
@@ -85,6 +86,7 @@ struct InteractionScene {
   double dt = 0.0;    ///< time step (s)
   DetectorControl detector;
   bool energy = false;  ///< the contacts account their energy (ContactEnergy)
+  const TeamSplit* split = nullptr;  ///< how a team shares the particles out (null: evenly)
 };
 
 /// A candidate pair for Interactions::setCandidates: slots a and b (a particle slot, owned or a
@@ -101,6 +103,9 @@ struct CandidateKey {
 struct WallLoadSum {
   static constexpr int force = 0, torque = 3, elasticForce = 6, stiffness = 9;  ///< offsets in part
   std::array<ExactSum, 10> part;  ///< force (N), torque about the reference (N m), elastic force (N), stiffness (N/m)
+  void clear() {
+    for (ExactSum& p : part) p.clear();
+  }
 };
 
 /// A contact computed on another rank (where its A is owned) whose B this process owns: B's slot
@@ -134,15 +139,24 @@ class Interactions {
   /// Keeps the store's optional arrays (rolling, curvature cache) to what the scene's contact
   /// models need, after a model changed: arrays added fresh, arrays no longer needed dropped.
   void fitStore(const InteractionScene& scene);
-  /// Detection and laws of every candidate; the particles' speed bounds (ParticleStore) are
-  /// computed first when a group culls by them; adds to the statistics.
-  void compute(const InteractionScene& scene, std::vector<double>& speedBound, ContactStatistics& statistics);
-  /// Per particle: F = m (g - c v) plus its contacts' loads, and the torques; per wall this
-  /// process's share of its load (walls.size() sums, reset here). remote[m]: the load of the
-  /// m-th contact of setRemoteContacts. halfStep > 0: each particle then takes a kick of that
-  /// half step (integrator.hpp) in the same pass, the step's closing kick without a pass of its own.
+  // compute and reduce are a step's team work (docs/architecture.md, "A step"): called by every
+  // thread of an OpenMP team, each takes its share of the particles (thread_share.hpp) and of the
+  // contacts, those whose A is one of them; they end without a barrier: the caller's ends them.
+  // Outside a parallel region one thread does all.
+
+  /// Serial: the computation's records fitted to the store (before compute, by one thread).
+  void beginCompute(const InteractionScene& scene);
+  /// Team work: detection and laws of every candidate; adds to the statistics. The particles'
+  /// speed bounds (ParticleStore::speedBound, ghosts too) must be current when cullsBySpeed().
+  void compute(const InteractionScene& scene, ContactStatistics& statistics);
+  /// Whether some group culls separated pairs by the particles' speed bounds (the iterative kinds).
+  bool cullsBySpeed() const;
+  /// Team work: per particle, F = m (g - c v) plus its contacts' loads, and the torques; per
+  /// wall this process's share of its load added to wallLoads (one per wall, zero before). remote[m]: the load of the m-th contact of setRemoteContacts.
+  /// halfStep > 0: each particle then takes a kick of that half step (integrator.hpp) in the
+  /// same pass, the step's closing kick without a pass of its own.
   void reduce(ParticleStore& particles, const Vec3& gravity, double drag, const std::vector<Wall>& walls,
-              std::vector<WallLoadSum>& wallLoads, std::span<const LoadOnB> remote = {}, double halfStep = 0.0);
+              std::vector<WallLoadSum>& wallLoads, std::span<const LoadOnB> remote, double halfStep, const TeamSplit& split);
 
   /// Migration (docs/architecture.md, "Ghosts"): the contacts whose A leaves this process
   /// (leaving[slot of A], written out by the caller) removed; `count` contacts that arrived with
@@ -188,6 +202,12 @@ class Interactions {
     std::vector<std::uint32_t> members;  ///< contact indices, ascending
   };
   void regroup(const InteractionScene& scene);
+  /// The calling thread's run of a group's members: those whose A is one of its particles
+  /// (its share of the `owned` ones by `split`, evenly without) while the store holds its
+  /// contacts by A's slot, as setCandidates makes it; else an even share.
+  std::span<const std::uint32_t> memberShare(const Group& group, std::ptrdiff_t owned, const TeamSplit* split) const;
+  /// Whether the computation keeps warm-skip records (iterative kinds, confirmWarm).
+  bool recording(const InteractionScene& scene) const { return cullsBySpeed() && scene.detector.confirmWarm; }
   /// After the store's slots changed: keyOrder_ and the wall contacts from its keys, the skip
   /// records dropped.
   void storeChanged();
@@ -197,6 +217,7 @@ class Interactions {
 
   ContactStore store_;
   std::vector<Group> groups_;
+  bool bySlot_ = true;  ///< the store's contacts ascend by A's slot (regroup)
   std::vector<std::uint32_t> keyOrder_;  ///< the contacts in key order
   static constexpr std::uint32_t bodyBFlag = 0x80000000u;  ///< in involvement_: the particle is body B
   static constexpr std::uint32_t remoteFlag = 0x40000000u;  ///< in involvement_: an index into remote_
@@ -208,7 +229,6 @@ class Interactions {
   /// contact index, | bodyBFlag where i is body B (| imageFlag through its image), or remoteFlag | m
   std::vector<std::uint32_t> involvement_;
   std::vector<RemoteContact> remote_;            ///< setRemoteContacts' list, in its order
-  std::vector<std::uint32_t> wallContacts_;      ///< the contacts with a wall, in key order
   mutable std::vector<std::uint32_t> interacting_;  ///< the force-carrying contacts, in key order (listActing)
   mutable bool interactingListed_ = false;
   std::vector<detail::WarmSkip> warmSkips_;      ///< by store slot (warm_skip.hpp); empty without particle pairs to solve

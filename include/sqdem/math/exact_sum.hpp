@@ -10,6 +10,11 @@
 // and the exact accumulators of CRlibm/MPFR-based codes are not packaged, or round-trip through
 // multi-precision objects far slower than the ~2 ns an addition costs here).
 //
+// The accumulator keeps the range of limbs its addends touched: carries, merges and the final
+// rounding visit that range only (a few limbs for the loads of one wall, not all 68), and carries
+// leave balanced digits, in [-2^31, 2^31), so that a negative sum needs no chain of borrows up to
+// the top limb.
+//
 // Non-finite addends make the sum their IEEE sum (inf, or NaN for inf - inf or any NaN).
 
 #include <array>
@@ -37,13 +42,15 @@ class ExactSum {
   }
   /// Adds another sum (a thread's or a rank's share).
   ExactSum& operator+=(const ExactSum& other);
+  /// Back to zero (the limbs touched only: cheaper than a fresh accumulator).
+  void clear();
 
   /// The sum rounded to the nearest double, ties to even (inf when it exceeds the range).
   double value() const;
 
-  /// The limbs with every carry propagated (each digit in [0, 2^32), the top limb signed) and
-  /// the non-finite part: the form a rank sends, whose limb-wise integer sum over ranks is the
-  /// sum of the ranks' sums (fromLimbs). Sums of up to 2^31 such forms cannot overflow a limb.
+  /// The limbs with every carry propagated (each a balanced digit, in [-2^31, 2^31)) and the
+  /// non-finite part: the form a rank sends, whose limb-wise integer sum over ranks is the sum
+  /// of the ranks' sums (fromLimbs). Sums of up to 2^31 such forms cannot overflow a limb.
   std::array<std::int64_t, limbCount> limbs() const;
   double nonFinite() const { return nonFinite_; }
   static ExactSum fromLimbs(std::span<const std::int64_t, limbCount> limbs, double nonFinite);
@@ -53,9 +60,12 @@ class ExactSum {
   void addBits(double x);
   void normalise();
 
+  /// Every limb below (pending_ + 1) 2^32 in magnitude: pending_ counts additions since the
+  /// last carry propagation (a merged sum, its own and one more for its digits).
   std::array<std::int64_t, limbCount> limb_{};
   double nonFinite_ = 0.0;  ///< the IEEE sum of the inf and NaN addends
-  int pending_ = 0;         ///< additions since the last carry propagation
+  int pending_ = 0;
+  int lo_ = limbCount, hi_ = 0;  ///< the limbs outside [lo_, hi_) are zero
 };
 
 inline void ExactSum::addBits(double x) {
@@ -73,6 +83,8 @@ inline void ExactSum::addBits(double x) {
   const int offset = p & 31, c = p >> 5;
   const std::uint64_t low = mantissa << offset, high = offset == 0 ? 0 : mantissa >> (64 - offset);  // < 2^84
   const std::int64_t sign = (bits >> 63) != 0 ? -1 : 1;
+  lo_ = c < lo_ ? c : lo_;
+  hi_ = c + 3 > hi_ ? c + 3 : hi_;
   limb_[c] += sign * static_cast<std::int64_t>(low & 0xffffffffu);
   limb_[c + 1] += sign * static_cast<std::int64_t>(low >> 32);
   limb_[c + 2] += sign * static_cast<std::int64_t>(high);

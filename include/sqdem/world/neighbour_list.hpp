@@ -56,10 +56,16 @@ std::vector<CandidatePair> aabbTreePairs(const ParticleCloud& cloud, double skin
 class NeighbourList {
  public:
   /// skin (m): extra distance kept in the list.
-  explicit NeighbourList(double skin, BroadPhase search = BroadPhase::CellList) : skin_(skin), search_(search) {}
+  explicit NeighbourList(double skin, BroadPhase search = BroadPhase::CellList)
+      : skin_(skin), limit_(0.25 * skin * skin), search_(search) {}
 
   /// True when an owned particle has moved more than skin/2 since the last build (or never built).
   bool needsRebuild(const ParticleStore& particles) const;
+  /// Whether owned slot i, now at x, has moved more than skin/2 since the last build (the step's
+  /// drift asks for each of its particles); the build must cover the slots (covers).
+  bool outOfSkin(std::size_t i, const Vec3& x) const { return i >= reference_.size() || (x - reference_[i]).squaredNorm() > limit_; }
+  /// Whether the last build was of `owned` particles.
+  bool covers(std::size_t owned) const { return reference_.size() == owned; }
   /// Rebuilds the candidate list from where the owned particles and their ghosts are now: the
   /// pairs whose A (the lower id) is owned. reach[s] is slot s's bounding-sphere radius (m).
   void rebuild(const ParticleStore& particles, const std::vector<double>& reach);
@@ -79,6 +85,7 @@ class NeighbourList {
 
  private:
   double skin_;
+  double limit_;  ///< (skin/2)^2 (m^2)
   BroadPhase search_;
   std::vector<Vec3> reference_;  ///< owned positions at the last build
   std::vector<CandidatePair> pairs_;

@@ -33,6 +33,7 @@ namespace sqdem {
 
 class CheckpointReader;
 class CheckpointWriter;
+class Team;
 
 struct Material {
   double youngsModulus = 0.0;  ///< E (Pa)
@@ -52,6 +53,9 @@ struct StepTiming {
   /// ghosts made and refreshed, particles migrated, loads sent across ranks: across ranks the
   /// communication (not counted in the others)
   double ghosts = 0.0;
+  /// The threads' mean wait at the step's barriers (imbalance and serial parts; counted in the
+  /// phases above as well)
+  double barrierWait = 0.0;
 };
 
 class World {
@@ -124,7 +128,7 @@ class World {
   /// Advances one step (computes the initial forces first if needed).
   void step();
   /// Computes contacts and forces at the current state (no integration).
-  void computeForces() { computeForcesThenKick(0.0); }
+  void computeForces();
 
   /// The owned particles, slots [0, size()), and their ghosts after them (ghosts()).
   ParticleStore& particles() { return particles_; }
@@ -181,14 +185,21 @@ class World {
   double hertzTimeStep(double speed, double stepsPerCollision) const;
 
  private:
-  /// computeForces; halfStep > 0: every owned particle then takes a kick of that half step in the
-  /// reduction's pass (Interactions::reduce).
-  void computeForcesThenKick(double halfStep);
+  /// Throws std::logic_error when a material pair has no contact model.
+  void requireModels() const;
+  /// Serial part of a force computation (the master's, team.hpp): the broad phase when some
+  /// particle `moved` more than half the skin (a decision reduced over ranks) or a wall did,
+  /// else the ghosts refreshed; the interactions' records fitted.
+  void prepareForces(bool moved);
+  /// A team's force computation after prepareForces (every thread calls it): contacts, the
+  /// other ranks' loads, the reduction and the walls' loads; halfStep > 0: every owned particle
+  /// then takes a kick of that half step in the reduction's pass (Interactions::reduce).
+  void forcePhases(Team& team, double halfStep);
   const ContactModel& model(std::uint32_t ma, std::uint32_t mb) const { return models_[ma * materials_.size() + mb]; }
   /// What the interaction layer reads of this world.
   InteractionScene interactionScene() const {
     return {particles_, shapes_, walls_, meshes_, models_, materials_.size(), neighbours_.skin(), dt_, detector_,
-            ledger_.has_value()};
+            ledger_.has_value(), &split_};
   }
   /// The candidate list from the neighbour list and the walls within reach, carrying the
   /// histories of persisting pairs; kept until the next rebuild (particles or walls moved more
@@ -204,8 +215,8 @@ class World {
   /// The cost of each owned particle (1 + the candidate contacts it is A of); measures the
   /// imbalance and cuts the sub-domains again past the threshold.
   void rebalance();
-  /// The walls' loads: this process's shares (wallLoads_) summed over the ranks.
-  void reduceWallLoads();
+  /// Wall w's load from its exact sums (wallLoads_, summed over the ranks).
+  void setWallLoad(std::size_t w);
   /// Mesh wall w's features within `reach` (m) of particle i, ascending.
   void addMeshCandidates(std::uint32_t i, std::uint32_t w, double reach, std::vector<CandidateKey>& next) const;
   bool wallsMovedHalfSkin() const;
@@ -233,6 +244,7 @@ class World {
   Interactions interactions_;
   ContactStatistics statistics_;
   StepTiming timing_;
+  TeamSplit split_;  ///< the threads' runs of particles, balanced by their measured contact work
   Vec3 gravity_ = Vec3::Zero();
   double viscousDamping_ = 0.0;
   DetectorControl detector_;
