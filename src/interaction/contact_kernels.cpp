@@ -1,6 +1,8 @@
 // The fused detect-then-law kernels: one instantiation per pair kind and normal law type, run
 // over a group's contacts with the law fixed for the whole loop.
 
+#include <omp.h>
+
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -329,6 +331,9 @@ void Interactions::beginCompute(const InteractionScene& scene) {
   if (!recording(scene)) warmSkips_.clear();  // none kept while not recording, so none goes stale
   if (recording(scene) && warmSkips_.size() != store_.size()) warmSkips_.assign(store_.size(), {});
   interactingListed_ = false;  // the acting flags are written now
+  // Each thread's sums of the loads of the wall contacts it computes (reduce).
+  threadWallLoads_.resize(static_cast<std::size_t>(omp_get_num_threads()));  // the calling team's (1 outside one)
+  for (std::vector<WallLoadSum>& loads : threadWallLoads_) loads.resize(scene.walls.size());
 }
 
 bool Interactions::cullsBySpeed() const {

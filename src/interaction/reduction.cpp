@@ -1,6 +1,8 @@
 // The reduction of the contacts' loads to particles, in key order per particle, and to walls, as
 // exact sums (see interactions.hpp: independent of the thread count, the slots and the ranks).
 
+#include <omp.h>
+
 #include "sqdem/dynamics/integrator.hpp"
 #include "sqdem/interaction/interactions.hpp"
 
@@ -56,9 +58,8 @@ void Interactions::reduce(ParticleStore& p, const Vec3& gravity, double drag, co
   // The walls' shares: each thread sums the wall contacts it computed (memberShare: their records
   // are in its core's cache), then adds its sums to the walls' (exact sums: in any order and any
   // split, the same bits).
-  thread_local std::vector<WallLoadSum> mine;  // kept between steps: cleared in the limbs touched
-  mine.resize(walls.size());
-  for (WallLoadSum& load : mine) load.clear();
+  std::vector<WallLoadSum>& mine = threadWallLoads_[static_cast<std::size_t>(omp_get_thread_num())];
+  for (WallLoadSum& load : mine) load.clear();  // (sized by beginCompute)
   for (const Group& group : groups_) {
     if (!withWall(group.kind)) continue;
     for (const std::uint32_t k : memberShare(group, n, &split)) {

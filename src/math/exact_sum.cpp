@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace sqdem {
 namespace {
@@ -77,7 +78,8 @@ ExactSum ExactSum::fromLimbs(std::span<const std::int64_t, limbCount> limbs, dou
 }
 
 double ExactSum::value() const {
-  if (nonFinite_ != 0.0 || std::isnan(nonFinite_)) return nonFinite_;
+  if (std::isnan(nonFinite_)) return std::numeric_limits<double>::quiet_NaN();
+  if (nonFinite_ != 0.0) return nonFinite_;
   if (lo_ >= hi_) return 0.0;
   Limbs limb = limb_;
   int top = propagateCarries(limb, lo_, hi_) - 1;

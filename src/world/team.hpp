@@ -26,7 +26,7 @@ class Team {
   /// Runs body() on every thread of a new team (on this thread alone when one thread is asked for).
   template <typename F>
   void run(F&& body) {
-    if (omp_get_max_threads() == 1) {
+    if (omp_get_max_threads() == 1 && !omp_in_parallel()) {  // (inside another region: a team of its own)
       body();
       return;
     }
@@ -42,7 +42,8 @@ class Team {
     const unsigned generation = generation_.value.load(std::memory_order_acquire);
     if (arrived_.value.fetch_add(1, std::memory_order_acq_rel) + 1 == size) {
       arrived_.value.store(0, std::memory_order_relaxed);
-      generation_.value.store(generation + 1, std::memory_order_release);
+      // Sequentially consistent: notify_all's check for sleepers must not pass the store.
+      generation_.value.store(generation + 1, std::memory_order_seq_cst);
       generation_.value.notify_all();  // a system call only when some thread sleeps
     } else {
       // Spin a while (a step's waits are mostly shorter), then sleep: with more threads than

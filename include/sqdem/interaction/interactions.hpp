@@ -144,7 +144,8 @@ class Interactions {
   // contacts, those whose A is one of them; they end without a barrier: the caller's ends them.
   // Outside a parallel region one thread does all.
 
-  /// Serial: the computation's records fitted to the store (before compute, by one thread).
+  /// Serial: the computation's records fitted to the store and the threads' wall sums to the
+  /// walls (before compute and reduce, by one thread).
   void beginCompute(const InteractionScene& scene);
   /// Team work: detection and laws of every candidate; adds to the statistics. The particles'
   /// speed bounds (ParticleStore::speedBound, ghosts too) must be current when cullsBySpeed().
@@ -231,6 +232,7 @@ class Interactions {
   std::vector<RemoteContact> remote_;            ///< setRemoteContacts' list, in its order
   mutable std::vector<std::uint32_t> interacting_;  ///< the force-carrying contacts, in key order (listActing)
   mutable bool interactingListed_ = false;
+  std::vector<std::vector<WallLoadSum>> threadWallLoads_;  ///< per thread, per wall (reduce)
   std::vector<detail::WarmSkip> warmSkips_;      ///< by store slot (warm_skip.hpp); empty without particle pairs to solve
 };
 

@@ -15,7 +15,8 @@
 // leave balanced digits, in [-2^31, 2^31), so that a negative sum needs no chain of borrows up to
 // the top limb.
 //
-// Non-finite addends make the sum their IEEE sum (inf, or NaN for inf - inf or any NaN).
+// Non-finite addends make the sum their IEEE sum: inf, or NaN for inf - inf or any NaN (always
+// the default quiet NaN, whose bits do not depend on which NaN came first).
 
 #include <array>
 #include <bit>
@@ -79,6 +80,7 @@ inline void ExactSum::addBits(double x) {
   }
   const std::uint64_t fraction = bits & ((std::uint64_t{1} << 52) - 1);
   const std::uint64_t mantissa = exponent == 0 ? fraction : fraction | (std::uint64_t{1} << 52);
+  if (mantissa == 0) return;  // a zero adds nothing (and widens no range)
   const int p = exponent == 0 ? 0 : exponent - 1;
   const int offset = p & 31, c = p >> 5;
   const std::uint64_t low = mantissa << offset, high = offset == 0 ? 0 : mantissa >> (64 - offset);  // < 2^84
