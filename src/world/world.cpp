@@ -231,17 +231,22 @@ void World::requireModels() const {
   }
 }
 
+template <typename Body>
+void World::inTeam(Body&& body) {
+  Team team;
+  team.run([&] { body(team); });
+  team.rethrow();
+  timing_.barrierWait += team.meanWait();
+  split_.rebalance(team.work());  // the next computation's runs
+}
+
 void World::computeForces() {
   requireModels();
-  Team team;
-  team.run([&] {
+  inTeam([&](Team& team) {
     team.master([&] { prepareForces(neighbours_.needsRebuild(particles_)); });
     team.barrier();
     if (!team.failed()) forcePhases(team, 0.0);
   });
-  team.rethrow();
-  timing_.barrierWait += team.meanWait();
-  split_.rebalance(team.work());
 }
 
 void World::prepareForces(bool moved) {
@@ -299,9 +304,8 @@ void World::forcePhases(Team& team, double halfStep) {
     team.barrier();
     if (team.failed()) return;
   }
-  const auto walls = static_cast<std::ptrdiff_t>(walls_.size());
-#pragma omp for schedule(static) nowait
-  for (std::ptrdiff_t w = 0; w < walls; ++w) setWallLoad(w);
+  const Share walls = threadShare(static_cast<std::ptrdiff_t>(walls_.size()));
+  for (std::ptrdiff_t w = walls.begin; w < walls.end; ++w) setWallLoad(w);
   team.barrier();
   team.master([&] {
     forcesCurrent_ = true;
@@ -318,10 +322,9 @@ void World::step() {
   ParticleStore& p = particles_;
   const auto n = static_cast<std::ptrdiff_t>(p.size());
   std::vector<Wall> wallsBefore;  // the ledger accounts the step between the forces and the closing kick
-  Team team;
   std::atomic<bool> moved = false;  // some particle moved more than half the skin since the last build
   Clock::time_point phase = Clock::now();  // the master's clock
-  team.run([&] {
+  inTeam([&](Team& team) {
     bool mineMoved = false;
     const Share particles = split_.share(n);
     for (std::ptrdiff_t i = particles.begin; i < particles.end; ++i) {
@@ -359,9 +362,6 @@ void World::step() {
       team.master([&] { timing_.integration += seconds(Clock::now() - phase); });
     }
   });
-  team.rethrow();
-  timing_.barrierWait += team.meanWait();
-  split_.rebalance(team.work());  // the next step's runs
 }
 
 void World::enableEnergyLedger() {

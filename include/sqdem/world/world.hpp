@@ -185,6 +185,10 @@ class World {
   double hertzTimeStep(double speed, double stepsPerCollision) const;
 
  private:
+  /// Runs body(team) on every thread of a new Team (team.hpp), rethrows what its serial parts
+  /// threw, and books the threads' waits and work (timing_, split_).
+  template <typename Body>
+  void inTeam(Body&& body);
   /// Throws std::logic_error when a material pair has no contact model.
   void requireModels() const;
   /// Serial part of a force computation (the master's, team.hpp): the broad phase when some
