@@ -4,8 +4,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <bit>
 #include <cmath>
 #include <random>
+#include <string>
+#include <tuple>
 
 #include "sqdem/contact/detector.hpp"
 #include "sqdem/interaction/contact_store.hpp"
@@ -224,5 +228,98 @@ TEST(ConfirmedWarmAnswers, SameBitsAsEvaluatingEverySurface) {
     EXPECT_EQ(sc.detectorIterations, se.detectorIterations);
     EXPECT_EQ(se.detectorConfirmations, 0);
     EXPECT_GT(sc.detectorConfirmations, sc.detectorCalls / 10);  // the path this test is about was taken
+  }
+}
+
+namespace {
+
+/// A periodic 5 x 5 x 4 lattice of 1 mm spheres, neighbours 0 +- 7 um apart, with random
+/// velocities and spins large enough that contacts open, close and slide, on the given path.
+World shakenSpheres(SimdPath path) {
+  const double r = 1e-3, pitch = 2e-3;
+  const Domain box{.lo = Vec3::Zero(), .hi = Vec3(5 * pitch, 5 * pitch, 4 * pitch), .periodic = {true, true, true}};
+  World world({Superquadric::sphere(r)}, {Material{1e7, 0.3, 2500.0, 0.3, 0.5}}, box, 0.1 * r);
+  world.setContactModel(0, 0, world.defaultContactModel(0, 0));
+  world.setSimdPath(path);
+  std::mt19937_64 rng(3);
+  std::normal_distribution<double> speed(0.0, 2e-3), jitter(0.0, 5e-6);
+  for (int i = 0; i < 100; ++i) {
+    const Vec3 site = (Vec3(i % 5, i / 5 % 5, i / 25) + Vec3::Constant(0.5)) * pitch + Vec3(jitter(rng), jitter(rng), jitter(rng));
+    const std::size_t n = world.addParticle(0, 0, site, Quat::Identity());
+    world.particles().velocity[n] = Vec3(speed(rng), speed(rng), speed(rng));
+    world.particles().setAngularVelocity(n, Vec3(speed(rng), speed(rng), speed(rng)) / r);
+  }
+  world.setTimeStep(0.2 * world.rayleighTimeStep());
+  return world;
+}
+
+}  // namespace
+
+// simd_path.hpp, round_hertz_lanes.hpp: every path of the sphere-pair Hertz kernel across
+// contacts gives the contact-by-contact kernel's bits: the state of every particle and every
+// record of every candidate contact (status, normal, overlap, point, spring, force, load) at
+// every step of a run in which contacts form, open and slide (Coulomb's cap, mindlin_spring.hpp).
+TEST(RoundHertzLanes, EveryPathGivesTheContactByContactBits) {
+  for (const SimdPath path : availableSimdPaths()) {
+    if (path == SimdPath::Scalar) continue;
+    World lanes = shakenSpheres(path), reference = shakenSpheres(SimdPath::Scalar);
+    long long sliding = 0, acting = 0, opened = 0;
+    for (int step = 0; step < 600; ++step) {
+      lanes.step();
+      reference.step();
+      const ParticleStore &p = lanes.particles(), &q = reference.particles();
+      for (std::size_t i = 0; i < p.size(); ++i) {
+        ASSERT_EQ(p.position[i], q.position[i]) << simdPathName(path) << ", step " << step << ", particle " << i;
+        ASSERT_EQ(p.velocity[i], q.velocity[i]) << simdPathName(path) << ", step " << step << ", particle " << i;
+        ASSERT_EQ(p.angularVelocity[i], q.angularVelocity[i]) << simdPathName(path) << ", step " << step << ", particle " << i;
+      }
+      const ContactStore &s = lanes.interactions().store(), &t = reference.interactions().store();
+      ASSERT_EQ(s.size(), t.size());
+      for (std::size_t k = 0; k < s.size(); ++k) {
+        const auto where = [&] { return std::string(simdPathName(path)) + ", step " + std::to_string(step) + ", contact " + std::to_string(k); };
+        ASSERT_EQ(s.key(k), t.key(k)) << where();
+        ASSERT_EQ(s.status[k], t.status[k]) << where();
+        ASSERT_EQ(s.normal[k], t.normal[k]) << where();
+        ASSERT_EQ(std::bit_cast<std::uint64_t>(s.overlap[k]), std::bit_cast<std::uint64_t>(t.overlap[k])) << where();
+        ASSERT_EQ(s.point[k], t.point[k]) << where();
+        ASSERT_EQ(s.spring[k], t.spring[k]) << where();
+        ASSERT_EQ(s.acting[k], t.acting[k]) << where();
+        ASSERT_EQ(s.force[k], t.force[k]) << where();
+        const NormalLoad &a = s.load[k], &b = t.load[k];
+        ASSERT_EQ(std::tie(a.force, a.damping, a.stiffness, a.area, a.yielded), std::tie(b.force, b.damping, b.stiffness, b.area, b.yielded)) << where();
+        if (!s.acting[k]) continue;
+        ++acting;
+        const Vec3 tangential = s.force[k] - s.force[k].dot(s.normal[k]) * s.normal[k];
+        sliding += std::abs(tangential.norm() - 0.3 * a.force) < 1e-9 * a.force;
+      }
+      opened += s.size() - std::count(s.acting.begin(), s.acting.end(), std::uint8_t{1});
+    }
+    std::printf("%s: %lld contact-steps acting, %lld sliding, %lld candidate-steps not acting\n",
+                std::string(simdPathName(path)).c_str(), acting, sliding, opened);
+    EXPECT_GT(sliding, acting / 100);  // the cap's branch was taken
+    EXPECT_GT(opened, acting / 10);    // and the separated lanes'
+    EXPECT_EQ(lanes.statistics().detectorCalls, reference.statistics().detectorCalls);
+  }
+}
+
+// Coincident centres are Degenerate on every path (round_contact.hpp: normal +z, overlap rA + rB,
+// no force), counted once per force computation (the first step computes two).
+TEST(RoundHertzLanes, CoincidentCentresAreDegenerateOnEveryPath) {
+  for (const SimdPath path : availableSimdPaths()) {
+    World world({Superquadric::sphere(1e-3)}, {Material{1e7, 0.3, 2500.0, 0.3, 0.5}}, openSpace, 1e-4);
+    world.setContactModel(0, 0, world.defaultContactModel(0, 0));
+    world.setSimdPath(path);
+    world.addParticle(0, 0, Vec3::Zero(), Quat::Identity());
+    world.addParticle(0, 0, Vec3::Zero(), Quat::Identity());
+    world.setTimeStep(1e-6);
+    world.step();
+    const ContactStore& s = world.interactions().store();
+    ASSERT_EQ(s.size(), 1u) << simdPathName(path);
+    EXPECT_EQ(s.status[0], ContactStatus::Degenerate) << simdPathName(path);
+    EXPECT_EQ(s.overlap[0], 2e-3) << simdPathName(path);
+    EXPECT_EQ(s.force[0], Vec3::Zero()) << simdPathName(path);
+    EXPECT_EQ(s.normal[0], Vec3::UnitZ()) << simdPathName(path);
+    EXPECT_EQ(world.statistics().failuresByStatus[static_cast<int>(ContactStatus::Degenerate)], 2) << simdPathName(path);
+    EXPECT_EQ(world.statistics().detectorFailures, 2) << simdPathName(path);
   }
 }

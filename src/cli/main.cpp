@@ -17,13 +17,15 @@ struct Command {
 };
 
 constexpr Command commands[] = {
-    {"run", R"(  run <scene.yaml> [--threads N] [--out DIR] [--overwrite] [--resume CHECKPOINT] [--progress-every S]
+    {"run", R"(  run <scene.yaml> [--threads N] [--simd PATH] [--out DIR] [--overwrite] [--resume CHECKPOINT] [--progress-every S]
                          Run a DEM scene (YAML; keys in docs/scene_reference.md): builds the
                          particles, runs the stages, writes to DIR (default out/<scene name>;
                          docs/output.md) ParaView series (.pvd/.vtp) and a view script, a CSV
                          log and its plot, a checkpoint after every stage; prints a summary. --threads: OpenMP threads
                          (default: OMP_NUM_THREADS if set, otherwise one per core; results do
-                         not depend on it). --overwrite: replace an earlier run's files in DIR
+                         not depend on it). --simd: the code path of the kernels that compute
+                         several contacts per instruction, scalar, baseline or avx2 (default:
+                         the widest this CPU runs; results do not depend on it). --overwrite: replace an earlier run's files in DIR
                          (without it, a DIR holding them is an error). --resume continues a
                          checkpoint of the same scene with its remaining stages. Progress: a
                          line on a terminal; otherwise a 'progress:' record every S seconds

@@ -1,4 +1,4 @@
-// `sqdem run scene.yaml [--threads N] [--out DIR] [--overwrite] [--resume CHECKPOINT] [--progress-every S]`: the
+// `sqdem run scene.yaml [--threads N] [--simd PATH] [--out DIR] [--overwrite] [--resume CHECKPOINT] [--progress-every S]`: the
 // command around the scene layer (scene/): parses the arguments, loads and builds the scene,
 // plans the run (stage lengths, time step), restores a checkpoint, prepares DIR (default
 // out/<scene name>; scene/output_directory.hpp), runs the stages (scene/stage_runner.hpp) and
@@ -141,7 +141,7 @@ void agreed(const Communicator& ranks, const std::function<void()>& part) {
 }
 
 int runScene(const std::shared_ptr<const Communicator>& communicator, const std::string& scenePath, fs::path outDir,
-             int threads, const std::string& resume, bool overwrite, double progressEvery) {
+             int threads, std::optional<SimdPath> simd, const std::string& resume, bool overwrite, double progressEvery) {
   const Communicator& ranks = *communicator;
   const bool speaks = ranks.rank() == 0;  // rank 0 prints and writes the run's files
   Scene scene;
@@ -156,6 +156,7 @@ int runScene(const std::shared_ptr<const Communicator>& communicator, const std:
     if (world.timeStep() != dt) throw SceneError(resume + ": the checkpoint's time step differs from the scene's");
   }
   if (threads > 0) omp_set_num_threads(threads);
+  if (simd) world.setSimdPath(*simd);
   const std::string stem = fs::path(scenePath).stem().string();
   // The scene file's name names the output files and goes into their plot scripts.
   if (!isPlainName(stem, 100)) {
@@ -172,8 +173,9 @@ int runScene(const std::shared_ptr<const Communicator>& communicator, const std:
     for (const std::string& w : plan.warnings) std::fprintf(stderr, "sqdem run: warning: %s\n", w.c_str());
   }
   std::printf("sqdem run: %s: %lld particles, %zu walls, dt = %.4g s (%.3g x the Rayleigh time), %d rank(s) x %d "
-              "thread(s), output in %s\n", scenePath.c_str(), particles, world.walls().size(), dt,
-              dt / plan.rayleighTime, ranks.size(), omp_get_max_threads(), output.directory.string().c_str());
+              "thread(s), %s kernels, output in %s\n", scenePath.c_str(), particles, world.walls().size(), dt,
+              dt / plan.rayleighTime, ranks.size(), omp_get_max_threads(), std::string(simdPathName(world.simdPath())).c_str(),
+              output.directory.string().c_str());
   if (!resume.empty()) {
     std::printf("resumed from %s at step %lld, %s '%s'\n", resume.c_str(), static_cast<long long>(start.totalSteps),
                 start.newStages ? "under this scene's stages (a new protocol, every contact history kept), from stage"
@@ -217,11 +219,12 @@ int runScene(const std::shared_ptr<const Communicator>& communicator, const std:
 
 int runCommand(const Arguments& args) {
   const char* usage =
-      "usage: sqdem run scene.yaml [--threads N] [--out DIR] [--overwrite] [--resume CHECKPOINT] [--progress-every S]\n";
+      "usage: sqdem run scene.yaml [--threads N] [--simd PATH] [--out DIR] [--overwrite] [--resume CHECKPOINT] [--progress-every S]\n";
   std::string scene;
   fs::path outDir;
   std::string resume;
   int threads = 0;
+  std::optional<SimdPath> simd;
   double progressEvery = 60.0;
   bool overwrite = false;
   std::vector<std::string> given;
@@ -234,7 +237,7 @@ int runCommand(const Arguments& args) {
       }
       given.push_back(a);
     }
-    if ((a == "--threads" || a == "--out" || a == "--resume" || a == "--progress-every") && i + 1 == args.size()) {
+    if ((a == "--threads" || a == "--simd" || a == "--out" || a == "--resume" || a == "--progress-every") && i + 1 == args.size()) {
       std::fprintf(stderr, "sqdem run: '%s' needs a value\n%s", a.c_str(), usage);
       return 2;
     }
@@ -247,6 +250,16 @@ int runCommand(const Arguments& args) {
         return 2;
       }
       threads = static_cast<int>(n);
+    } else if (a == "--simd") {
+      const std::string v = args[++i];
+      const std::vector<SimdPath> available = availableSimdPaths();
+      simd = simdPathNamed(v);
+      if (!simd || std::find(available.begin(), available.end(), *simd) == available.end()) {
+        std::string names;
+        for (const SimdPath path : available) names += (names.empty() ? "" : ", ") + std::string(simdPathName(path));
+        std::fprintf(stderr, "sqdem run: --simd = '%s': expected one this CPU runs: %s\n", v.c_str(), names.c_str());
+        return 2;
+      }
     } else if (a == "--progress-every") {
       const std::string v = args[++i];
       char* end = nullptr;
@@ -275,7 +288,7 @@ int runCommand(const Arguments& args) {
   const std::shared_ptr<const Communicator> ranks = launchedRanks();
   if (ranks->rank() != 0 && !std::freopen("/dev/null", "w", stdout)) return 1;  // rank 0 prints for the run
   try {
-    return runScene(ranks, scene, outDir, threads, resume, overwrite, progressEvery);
+    return runScene(ranks, scene, outDir, threads, simd, resume, overwrite, progressEvery);
   } catch (const SceneError& e) {  // found alike on every rank, before the run
     if (ranks->rank() == 0) std::fprintf(stderr, "sqdem run: %s\n", e.what());
     return 1;

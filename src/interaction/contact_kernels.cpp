@@ -11,6 +11,7 @@
 
 #include "contact_force.hpp"
 #include "contact_work.hpp"
+#include "round_hertz_lanes.hpp"
 #include "sqdem/contact/detector.hpp"
 #include "sqdem/interaction/interactions.hpp"
 
@@ -296,13 +297,17 @@ void groupKernel(std::span<const std::uint32_t> members, const ContactModel& pai
 }
 
 /// The group's kernel, with the ledger when the store keeps one (only laws that state their
-/// stored energy can: the scene loader refuses the others).
+/// stored energy can: the scene loader refuses the others); Hertz sphere pairs without it on
+/// the scene's path across contacts (round_hertz_lanes.hpp).
 template <PairKind Kind, NormalLawComponent Law>
 void runGroup(std::span<const std::uint32_t> members, const ContactModel& model, const Law& law,
               const InteractionScene& scene, const std::vector<double>& speedBound, std::vector<detail::WarmSkip>* skips,
               ContactStore& s, ContactStatistics& statistics) {
   if constexpr (StoredEnergyLaw<Law>) {
     if (s.withEnergy) return groupKernel<Kind, Law, true>(members, model, law, scene, speedBound, skips, s, statistics);
+  }
+  if constexpr (Kind == PairKind::SphereSphere && std::is_same_v<Law, HertzLaw>) {  // several per instruction
+    if (scene.simd != SimdPath::Scalar) return detail::roundHertzPairs(scene.simd, members, asRun(model, Kind), scene, s, statistics);
   }
   groupKernel<Kind, Law, false>(members, model, law, scene, speedBound, skips, s, statistics);
 }

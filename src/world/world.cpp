@@ -373,6 +373,14 @@ void World::enableEnergyLedger() {
   interactions_.fitStore(interactionScene());
 }
 
+void World::setSimdPath(SimdPath path) {
+  const std::vector<SimdPath> available = availableSimdPaths();
+  if (std::ranges::find(available, path) == available.end()) {
+    throw std::invalid_argument("World: this CPU cannot run the '" + std::string(simdPathName(path)) + "' kernels");
+  }
+  simd_ = path;
+}
+
 double World::wallArea(std::size_t w) const {
   int axis;
   walls_.at(w).plane.normal.cwiseAbs().maxCoeff(&axis);

@@ -109,4 +109,12 @@ expect_error "corrupted checkpoint" 1 "checksum" "$sqdem" run "$scene" --resume 
 expect_error "directory as checkpoint" 1 "not a checkpoint file" "$sqdem" run "$scene" --resume "$scratch" --out "$scratch/c"
 expect_error "scene as checkpoint" 1 "not an sqdem checkpoint" "$sqdem" run "$scene" --resume "$scene" --out "$scratch/c"
 check "bad checkpoints created no output" test ! -e "$scratch/c"
+
+# --simd (simd_path.hpp): a bed of spheres run contact by contact and on the widest path this CPU
+# runs ends in the same particle file, byte for byte; a path that does not exist is refused.
+"$sqdem" run "$source_dir/tests/scenes/wall_path.yaml" --simd scalar --out "$scratch/scalar" > "$scratch/scalar.log" 2>&1
+"$sqdem" run "$source_dir/tests/scenes/wall_path.yaml" --out "$scratch/widest" > "$scratch/widest.log" 2>&1
+check "the run names its kernels' path" grep -Eq "thread\(s\), (baseline|avx2) kernels" "$scratch/widest.log"
+check "every path, the same particles" cmp "$scratch/scalar/wall_path_final_particles.csv" "$scratch/widest/wall_path_final_particles.csv"
+expect_error "--simd avx512" 2 "--simd = 'avx512': expected one this CPU runs: scalar, baseline" "$sqdem" run "$scene" --simd avx512
 finish

@@ -23,6 +23,7 @@
 #include "sqdem/interaction/contact_model.hpp"
 #include "sqdem/interaction/contact_store.hpp"
 #include "sqdem/interaction/pair_kind.hpp"
+#include "sqdem/interaction/simd_path.hpp"
 #include "sqdem/interaction/thread_share.hpp"
 #include "sqdem/interaction/warm_skip.hpp"
 #include "sqdem/math/exact_sum.hpp"
@@ -87,6 +88,7 @@ struct InteractionScene {
   DetectorControl detector;
   bool energy = false;  ///< the contacts account their energy (ContactEnergy)
   const TeamSplit* split = nullptr;  ///< how a team shares the particles out (null: evenly)
+  SimdPath simd = SimdPath::Scalar;  ///< the kernels across contacts' code path (one this CPU runs)
 };
 
 /// A candidate pair for Interactions::setCandidates: slots a and b (a particle slot, owned or a

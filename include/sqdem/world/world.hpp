@@ -121,6 +121,10 @@ class World {
   /// The detector's tolerance and warm starts (interactions.hpp; defaults: 1e-10, on).
   void setDetectorControl(const DetectorControl& control) { detector_ = control; }
   const DetectorControl& detectorControl() const { return detector_; }
+  /// The code path of the kernels across contacts (simd_path.hpp; default: the widest this CPU
+  /// runs). Every path gives the same bits; std::invalid_argument for one this CPU cannot run.
+  void setSimdPath(SimdPath path);
+  SimdPath simdPath() const { return simd_; }
   void setTimeStep(double dt) { dt_ = dt; }
   double timeStep() const { return dt_; }
   double time() const { return time_; }
@@ -203,7 +207,7 @@ class World {
   /// What the interaction layer reads of this world.
   InteractionScene interactionScene() const {
     return {particles_, shapes_, walls_, meshes_, models_, materials_.size(), neighbours_.skin(), dt_, detector_,
-            ledger_.has_value(), &split_};
+            ledger_.has_value(), &split_, simd_};
   }
   /// The candidate list from the neighbour list and the walls within reach, carrying the
   /// histories of persisting pairs; kept until the next rebuild (particles or walls moved more
@@ -252,6 +256,7 @@ class World {
   Vec3 gravity_ = Vec3::Zero();
   double viscousDamping_ = 0.0;
   DetectorControl detector_;
+  SimdPath simd_ = widestSimdPath();
   std::optional<EnergyLedger> ledger_;
   std::shared_ptr<const Communicator> communicator_ = std::make_shared<SerialCommunicator>();
   int reorderInterval_ = 0;
