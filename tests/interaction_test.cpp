@@ -5,7 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <bit>
+#include <array>
+#include <cstring>
 #include <cmath>
 #include <random>
 #include <string>
@@ -233,24 +234,34 @@ TEST(ConfirmedWarmAnswers, SameBitsAsEvaluatingEverySurface) {
 
 namespace {
 
-/// A periodic 5 x 5 x 4 lattice of 1 mm spheres, neighbours 0 +- 7 um apart, with random
+/// A periodic 5 x 5 x 4 lattice of spheres, radii 1 and 0.8 mm and densities 2500 and 4000
+/// kg/m^3 in turn (A and B differ in every input), sites 2 mm apart +- 5 um, with random
 /// velocities and spins large enough that contacts open, close and slide, on the given path.
 World shakenSpheres(SimdPath path) {
   const double r = 1e-3, pitch = 2e-3;
   const Domain box{.lo = Vec3::Zero(), .hi = Vec3(5 * pitch, 5 * pitch, 4 * pitch), .periodic = {true, true, true}};
-  World world({Superquadric::sphere(r)}, {Material{1e7, 0.3, 2500.0, 0.3, 0.5}}, box, 0.1 * r);
-  world.setContactModel(0, 0, world.defaultContactModel(0, 0));
+  World world({Superquadric::sphere(r), Superquadric::sphere(0.8 * r)},
+              {Material{1e7, 0.3, 2500.0, 0.3, 0.5}, Material{2e7, 0.25, 4000.0, 0.4, 0.6}}, box, 0.1 * r);
+  for (std::uint32_t m : {0u, 1u}) {
+    for (std::uint32_t n : {0u, 1u}) world.setContactModel(m, n, world.defaultContactModel(m, n));
+  }
   world.setSimdPath(path);
   std::mt19937_64 rng(3);
   std::normal_distribution<double> speed(0.0, 2e-3), jitter(0.0, 5e-6);
   for (int i = 0; i < 100; ++i) {
     const Vec3 site = (Vec3(i % 5, i / 5 % 5, i / 25) + Vec3::Constant(0.5)) * pitch + Vec3(jitter(rng), jitter(rng), jitter(rng));
-    const std::size_t n = world.addParticle(0, 0, site, Quat::Identity());
+    const std::size_t n = world.addParticle(i % 3 == 0, i % 2, site, Quat::Identity());
     world.particles().velocity[n] = Vec3(speed(rng), speed(rng), speed(rng));
     world.particles().setAngularVelocity(n, Vec3(speed(rng), speed(rng), speed(rng)) / r);
   }
   world.setTimeStep(0.2 * world.rayleighTimeStep());
   return world;
+}
+
+/// Bit for bit, -0 and +0 told apart (Eigen's == is not).
+template <typename T>
+bool sameBits(const T& a, const T& b) {
+  return std::memcmp(&a, &b, sizeof(T)) == 0;
 }
 
 }  // namespace
@@ -263,6 +274,10 @@ TEST(RoundHertzLanes, EveryPathGivesTheContactByContactBits) {
   for (const SimdPath path : availableSimdPaths()) {
     if (path == SimdPath::Scalar) continue;
     World lanes = shakenSpheres(path), reference = shakenSpheres(SimdPath::Scalar);
+    const auto mu = [&](std::uint32_t a, std::uint32_t b) {
+      const ParticleStore& p = lanes.particles();
+      return lanes.defaultContactModel(p.material[a], p.material[b]).tangential.friction;
+    };
     long long sliding = 0, acting = 0, opened = 0;
     for (int step = 0; step < 600; ++step) {
       lanes.step();
@@ -279,18 +294,20 @@ TEST(RoundHertzLanes, EveryPathGivesTheContactByContactBits) {
         const auto where = [&] { return std::string(simdPathName(path)) + ", step " + std::to_string(step) + ", contact " + std::to_string(k); };
         ASSERT_EQ(s.key(k), t.key(k)) << where();
         ASSERT_EQ(s.status[k], t.status[k]) << where();
-        ASSERT_EQ(s.normal[k], t.normal[k]) << where();
-        ASSERT_EQ(std::bit_cast<std::uint64_t>(s.overlap[k]), std::bit_cast<std::uint64_t>(t.overlap[k])) << where();
-        ASSERT_EQ(s.point[k], t.point[k]) << where();
-        ASSERT_EQ(s.spring[k], t.spring[k]) << where();
+        ASSERT_TRUE(sameBits(s.normal[k], t.normal[k])) << where();
+        ASSERT_TRUE(sameBits(s.overlap[k], t.overlap[k])) << where();
+        ASSERT_TRUE(sameBits(s.point[k], t.point[k])) << where();
+        ASSERT_TRUE(sameBits(s.spring[k], t.spring[k])) << where();
+        ASSERT_TRUE(sameBits(s.normalHistory[k], t.normalHistory[k])) << where();
         ASSERT_EQ(s.acting[k], t.acting[k]) << where();
-        ASSERT_EQ(s.force[k], t.force[k]) << where();
+        ASSERT_TRUE(sameBits(s.force[k], t.force[k])) << where();
         const NormalLoad &a = s.load[k], &b = t.load[k];
-        ASSERT_EQ(std::tie(a.force, a.damping, a.stiffness, a.area, a.yielded), std::tie(b.force, b.damping, b.stiffness, b.area, b.yielded)) << where();
+        ASSERT_TRUE(sameBits(std::array{a.force, a.damping, a.stiffness, a.area}, std::array{b.force, b.damping, b.stiffness, b.area})) << where();
+        ASSERT_EQ(a.yielded, b.yielded) << where();
         if (!s.acting[k]) continue;
         ++acting;
         const Vec3 tangential = s.force[k] - s.force[k].dot(s.normal[k]) * s.normal[k];
-        sliding += std::abs(tangential.norm() - 0.3 * a.force) < 1e-9 * a.force;
+        sliding += std::abs(tangential.norm() - mu(s.a[k], s.b[k]) * a.force) < 1e-9 * a.force;
       }
       opened += s.size() - std::count(s.acting.begin(), s.acting.end(), std::uint8_t{1});
     }
@@ -298,7 +315,10 @@ TEST(RoundHertzLanes, EveryPathGivesTheContactByContactBits) {
                 std::string(simdPathName(path)).c_str(), acting, sliding, opened);
     EXPECT_GT(sliding, acting / 100);  // the cap's branch was taken
     EXPECT_GT(opened, acting / 10);    // and the separated lanes'
-    EXPECT_EQ(lanes.statistics().detectorCalls, reference.statistics().detectorCalls);
+    std::vector<long long> mine, theirs;
+    ContactStatistics::forEachCount(lanes.statistics(), [&](long long n) { mine.push_back(n); });
+    ContactStatistics::forEachCount(reference.statistics(), [&](long long n) { theirs.push_back(n); });
+    EXPECT_EQ(mine, theirs);
   }
 }
 

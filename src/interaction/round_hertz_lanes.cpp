@@ -4,14 +4,18 @@
 // scattered back into the store. The lane code is detectRound, kinematics and roundHertzForce
 // (contact_kernels.cpp, contact_force.hpp, round_contact.hpp, mindlin_spring.hpp) written out with
 // the same operations in the same order (Eigen's 3-vector sums run left to right), every branch
-// computed on every lane and selected; this file is compiled without fused multiply-adds and
-// without errno from sqrt (CMakeLists.txt), so each path gives the contact-by-contact bits.
+// computed on every lane and selected (a lane masked out may compute 0/0 or the root of a
+// negative number: no floating-point trap is enabled). The build contracts nothing into fused
+// multiply-adds and this file takes sqrt without errno (CMakeLists.txt), so each path gives
+// the contact-by-contact bits. Spheres have radii > 0 (the scene's shapes are validated), so
+// R* is always rA rB / (rA + rB).
 
 #include "round_hertz_lanes.hpp"
 
 #include <algorithm>
 #include <cstring>
 #include <numbers>
+#include <stdexcept>
 
 #include "contact_force.hpp"
 
@@ -22,7 +26,7 @@
 namespace sqdem::detail {
 namespace {
 
-constexpr int block = 32;                    ///< contacts per gather: ~14 kB of lanes, well inside L1
+constexpr int block = 32;                    ///< contacts per gather: 10.5 kB of lanes, well inside L1
 constexpr std::ptrdiff_t prefetchAhead = 24;  ///< contacts, as the group kernels (contact_kernels.cpp)
 
 template <int W> struct VectorOf { typedef double type __attribute__((vector_size(8 * W))); };
@@ -75,14 +79,14 @@ inline Vec3 take(const double (&p)[3][block], int j) { return {p[0][j], p[1][j],
 /// The group's constants, as the scalar kernel forms them.
 struct Constants {
   explicit Constants(const ContactModel& model, const InteractionScene& scene)
-      : cutoff(std::min(scene.skin, 0.0)),  // HertzLaw's range is 0 (detectRound's cut-off)
+      : range(HertzLaw{}.range({})), cutoff(std::min(scene.skin, range)),  // detectRound's
         fourThirdsE(4.0 / 3.0 * model.effectiveModulus), twoE(2.0 * model.effectiveModulus),
         eightG(8.0 * model.tangential.effectiveShear), dampingScale(model.damping.scale()),
         friction(model.tangential.friction), dt(scene.dt) {
     const RoundHertz roots(model);
     rootNormal = roots.rootNormal, rootTangential = roots.rootTangential;
   }
-  double cutoff, fourThirdsE, twoE, eightG, dampingScale, friction, dt, rootNormal = 0.0, rootTangential = 0.0;
+  double range, cutoff, fourThirdsE, twoE, eightG, dampingScale, friction, dt, rootNormal = 0.0, rootTangential = 0.0;
 };
 
 /// Lanes i..i+W-1 of the block: detectRound (detectSpheres), then within range kinematics and
@@ -105,7 +109,7 @@ template <int W>
   const Lane<W> overlap = converged ? rA + rB - distance : degenerate ? rA + rB : apart ? -(gap < 0.0 ? zero : gap) : zero;
   const Lane3<W> pointA = xA + rA * n, pointB = xB - rB * n;
   const Lane3<W> point = select<W>(touching, half * (pointA + pointB), none);
-  const auto acting = converged & (overlap > 0.0);
+  const auto acting = converged & (overlap > -c.range) & (overlap > 0.0);  // in range; roundHertzForce acts
   // kinematics
   const Lane3<W> velocityA = load<W>(l.vA, i) + cross(load<W>(l.wA, i), point - xA);
   const Lane3<W> relative = load<W>(l.vB, i) + cross(load<W>(l.wB, i), point - xB) - velocityA;
@@ -219,10 +223,15 @@ void roundHertzPairs(SimdPath path, std::span<const std::uint32_t> members, cons
   const Constants c(model, scene);
   Counts counts;
   switch (path) {
+    case SimdPath::Scalar: throw std::logic_error("roundHertzPairs: the scalar path is the group kernel's");
+    case SimdPath::Baseline: counts = solveBaseline(members, c, scene, s); break;
+    case SimdPath::Avx2:
 #if defined(__x86_64__)
-    case SimdPath::Avx2: counts = solveAvx2(members, c, scene, s); break;
+      counts = solveAvx2(members, c, scene, s);
+      break;
+#else
+      throw std::logic_error("roundHertzPairs: no AVX2 path outside x86-64");
 #endif
-    default: counts = solveBaseline(members, c, scene, s); break;
   }
 #pragma omp critical(sqdem_contact_statistics)
   {

@@ -110,11 +110,15 @@ expect_error "directory as checkpoint" 1 "not a checkpoint file" "$sqdem" run "$
 expect_error "scene as checkpoint" 1 "not an sqdem checkpoint" "$sqdem" run "$scene" --resume "$scene" --out "$scratch/c"
 check "bad checkpoints created no output" test ! -e "$scratch/c"
 
-# --simd (simd_path.hpp): a bed of spheres run contact by contact and on the widest path this CPU
-# runs ends in the same particle file, byte for byte; a path that does not exist is refused.
-"$sqdem" run "$source_dir/tests/scenes/wall_path.yaml" --simd scalar --out "$scratch/scalar" > "$scratch/scalar.log" 2>&1
-"$sqdem" run "$source_dir/tests/scenes/wall_path.yaml" --out "$scratch/widest" > "$scratch/widest.log" 2>&1
+# --simd (simd_path.hpp): the small bed made of polydisperse spheres, run contact by contact
+# and on the widest path this CPU runs, ends in the same particle file and log, byte for byte;
+# a path that does not exist is refused.
+sed 's/^  bead: .*/  bead: {volume_radius: [0.4e-3, 0.5e-3]}/' "$scene" > "$scratch/spheres.yaml"
+"$sqdem" run "$scratch/spheres.yaml" --simd scalar --out "$scratch/scalar" > "$scratch/scalar.log" 2>&1
+"$sqdem" run "$scratch/spheres.yaml" --out "$scratch/widest" > "$scratch/widest.log" 2>&1
 check "the run names its kernels' path" grep -Eq "thread\(s\), (baseline|avx2) kernels" "$scratch/widest.log"
-check "every path, the same particles" cmp "$scratch/scalar/wall_path_final_particles.csv" "$scratch/widest/wall_path_final_particles.csv"
+check "a bed of spheres in contact" grep -Eq "^final: solid fraction 0\.[3-6].*mean coordination [3-6]\." "$scratch/widest.log"
+check "every path, the same particles" cmp "$scratch/scalar/spheres_final_particles.csv" "$scratch/widest/spheres_final_particles.csv"
+check "every path, the same log" cmp "$scratch/scalar/spheres.csv" "$scratch/widest/spheres.csv"
 expect_error "--simd avx512" 2 "--simd = 'avx512': expected one this CPU runs: scalar, baseline" "$sqdem" run "$scene" --simd avx512
 finish

@@ -2,8 +2,9 @@
 // The code paths of the kernels that compute several contacts per instruction
 // (docs/performance.md, "SIMD across contacts"), chosen at run time from what the CPU offers, so
 // that one portable binary runs everywhere. Every path computes the same operations in the same
-// order on each contact (no fused multiply-add, no reassociation), so all of them give the same
-// bits as the contact-by-contact kernels: the path changes the speed, never a result.
+// order on each contact (the build contracts nothing into fused multiply-adds, CMakeLists.txt),
+// so all of them give the same bits as the contact-by-contact kernels: the path changes the
+// speed, never a result.
 
 #include <cstdint>
 #include <optional>
@@ -14,8 +15,8 @@ namespace sqdem {
 
 enum class SimdPath : std::uint8_t {
   Scalar,    ///< contact by contact: the reference the others are tested against
-  Baseline,  ///< two contacts per instruction in the build's baseline instruction set (x86-64: SSE2)
-  Avx2,      ///< four, with AVX2 (x86-64-v3 CPUs; x86-64 builds only)
+  Baseline,  ///< two contacts per instruction in the instruction set the build targets (x86-64's default: SSE2)
+  Avx2,      ///< four, in x86-64-v3's instruction set (AVX2 and its companions; x86-64 builds only)
 };
 
 /// The paths this CPU (and its operating system) runs, narrowest first.
