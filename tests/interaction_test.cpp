@@ -234,18 +234,22 @@ TEST(ConfirmedWarmAnswers, SameBitsAsEvaluatingEverySurface) {
 
 namespace {
 
-/// A periodic 5 x 5 x 4 lattice of spheres, radii 1 and 0.8 mm and densities 2500 and 4000
-/// kg/m^3 in turn (A and B differ in every input), sites 2 mm apart +- 5 um, with random
-/// velocities and spins large enough that contacts open, close and slide, on the given path.
+/// A 5 x 5 x 4 lattice of spheres, periodic in x and y, on a floor and under a tilted lid that
+/// moves (down and sideways): radii 1 and 0.8 mm and densities 2500 and 4000 kg/m^3 in turn (A
+/// and B differ in every input), sites 2 mm apart +- 5 um, with random velocities and spins large
+/// enough that contacts open, close and slide, on the given path.
 World shakenSpheres(SimdPath path) {
   const double r = 1e-3, pitch = 2e-3;
-  const Domain box{.lo = Vec3::Zero(), .hi = Vec3(5 * pitch, 5 * pitch, 4 * pitch), .periodic = {true, true, true}};
+  const Domain box{.lo = Vec3::Zero(), .hi = Vec3(5 * pitch, 5 * pitch, 4 * pitch), .periodic = {true, true, false}};
   World world({Superquadric::sphere(r), Superquadric::sphere(0.8 * r)},
               {Material{1e7, 0.3, 2500.0, 0.3, 0.5}, Material{2e7, 0.25, 4000.0, 0.4, 0.6}}, box, 0.1 * r);
   for (std::uint32_t m : {0u, 1u}) {
     for (std::uint32_t n : {0u, 1u}) world.setContactModel(m, n, world.defaultContactModel(m, n));
   }
   world.setSimdPath(path);
+  world.addWall(Wall{.plane = Plane{Vec3::Zero(), Vec3::UnitZ()}});
+  world.addWall(Wall{.plane = Plane{Vec3(0.0, 0.0, 4 * pitch), Vec3(0.05, 0.0, -1.0).normalized()},
+                     .velocity = Vec3(1e-3, 0.0, -1e-3), .material = 1});
   std::mt19937_64 rng(3);
   std::normal_distribution<double> speed(0.0, 2e-3), jitter(0.0, 5e-6);
   for (int i = 0; i < 100; ++i) {
@@ -266,19 +270,21 @@ bool sameBits(const T& a, const T& b) {
 
 }  // namespace
 
-// simd_path.hpp, round_hertz_lanes.hpp: every path of the sphere-pair Hertz kernel across
-// contacts gives the contact-by-contact kernel's bits: the state of every particle and every
-// record of every candidate contact (status, normal, overlap, point, spring, force, load) at
-// every step of a run in which contacts form, open and slide (Coulomb's cap, mindlin_spring.hpp).
+// simd_path.hpp, round_hertz_lanes.hpp: every path of the round Hertz kernels across contacts
+// (sphere pairs, spheres on plane walls) gives the contact-by-contact kernel's bits: the state of
+// every particle, every wall's load and every record of every candidate contact (status, normal,
+// overlap, point, spring, the normal law's record, force, load) and every statistic, at every
+// step of a run in which contacts form, open and slide (Coulomb's cap, mindlin_spring.hpp).
 TEST(RoundHertzLanes, EveryPathGivesTheContactByContactBits) {
   for (const SimdPath path : availableSimdPaths()) {
     if (path == SimdPath::Scalar) continue;
     World lanes = shakenSpheres(path), reference = shakenSpheres(SimdPath::Scalar);
     const auto mu = [&](std::uint32_t a, std::uint32_t b) {
       const ParticleStore& p = lanes.particles();
-      return lanes.defaultContactModel(p.material[a], p.material[b]).tangential.friction;
+      const std::uint32_t mb = b & wallFlag ? lanes.walls()[b & ~wallFlag].material : p.material[b];
+      return lanes.defaultContactModel(p.material[a], mb).tangential.friction;
     };
-    long long sliding = 0, acting = 0, opened = 0;
+    long long sliding = 0, acting = 0, opened = 0, onWalls = 0;
     for (int step = 0; step < 600; ++step) {
       lanes.step();
       reference.step();
@@ -287,6 +293,10 @@ TEST(RoundHertzLanes, EveryPathGivesTheContactByContactBits) {
         ASSERT_EQ(p.position[i], q.position[i]) << simdPathName(path) << ", step " << step << ", particle " << i;
         ASSERT_EQ(p.velocity[i], q.velocity[i]) << simdPathName(path) << ", step " << step << ", particle " << i;
         ASSERT_EQ(p.angularVelocity[i], q.angularVelocity[i]) << simdPathName(path) << ", step " << step << ", particle " << i;
+      }
+      for (std::size_t w = 0; w < lanes.walls().size(); ++w) {
+        ASSERT_TRUE(sameBits(lanes.walls()[w].force, reference.walls()[w].force)) << simdPathName(path) << ", step " << step;
+        ASSERT_TRUE(sameBits(lanes.walls()[w].torque, reference.walls()[w].torque)) << simdPathName(path) << ", step " << step;
       }
       const ContactStore &s = lanes.interactions().store(), &t = reference.interactions().store();
       ASSERT_EQ(s.size(), t.size());
@@ -306,13 +316,15 @@ TEST(RoundHertzLanes, EveryPathGivesTheContactByContactBits) {
         ASSERT_EQ(a.yielded, b.yielded) << where();
         if (!s.acting[k]) continue;
         ++acting;
+        onWalls += s.onWall(k);
         const Vec3 tangential = s.force[k] - s.force[k].dot(s.normal[k]) * s.normal[k];
         sliding += std::abs(tangential.norm() - mu(s.a[k], s.b[k]) * a.force) < 1e-9 * a.force;
       }
       opened += s.size() - std::count(s.acting.begin(), s.acting.end(), std::uint8_t{1});
     }
-    std::printf("%s: %lld contact-steps acting, %lld sliding, %lld candidate-steps not acting\n",
-                std::string(simdPathName(path)).c_str(), acting, sliding, opened);
+    std::printf("%s: %lld contact-steps acting (%lld on walls), %lld sliding, %lld candidate-steps not acting\n",
+                std::string(simdPathName(path)).c_str(), acting, onWalls, sliding, opened);
+    EXPECT_GT(onWalls, acting / 20);
     EXPECT_GT(sliding, acting / 100);  // the cap's branch was taken
     EXPECT_GT(opened, acting / 10);    // and the separated lanes'
     std::vector<long long> mine, theirs;

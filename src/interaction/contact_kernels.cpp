@@ -297,7 +297,7 @@ void groupKernel(std::span<const std::uint32_t> members, const ContactModel& pai
 }
 
 /// The group's kernel, with the ledger when the store keeps one (only laws that state their
-/// stored energy can: the scene loader refuses the others); Hertz sphere pairs without it on
+/// stored energy can: the scene loader refuses the others); round Hertz contacts without it on
 /// the scene's path across contacts (round_hertz_lanes.hpp).
 template <PairKind Kind, NormalLawComponent Law>
 void runGroup(std::span<const std::uint32_t> members, const ContactModel& model, const Law& law,
@@ -306,8 +306,8 @@ void runGroup(std::span<const std::uint32_t> members, const ContactModel& model,
   if constexpr (StoredEnergyLaw<Law>) {
     if (s.withEnergy) return groupKernel<Kind, Law, true>(members, model, law, scene, speedBound, skips, s, statistics);
   }
-  if constexpr (Kind == PairKind::SphereSphere && std::is_same_v<Law, HertzLaw>) {  // several per instruction
-    if (scene.simd != SimdPath::Scalar) return detail::roundHertzPairs(scene.simd, members, asRun(model, Kind), scene, s, statistics);
+  if constexpr (round(Kind) && std::is_same_v<Law, HertzLaw>) {  // several per instruction
+    if (scene.simd != SimdPath::Scalar) return detail::roundHertzContacts(scene.simd, Kind, members, asRun(model, Kind), scene, s, statistics);
   }
   groupKernel<Kind, Law, false>(members, model, law, scene, speedBound, skips, s, statistics);
 }

@@ -1,8 +1,9 @@
-// Sphere pairs under HertzLaw, W contacts per instruction (docs/performance.md, "SIMD across
+// Round contacts (sphere pairs, a sphere and a plane wall) under HertzLaw, W contacts per instruction (docs/performance.md, "SIMD across
 // contacts"). A member list is taken in blocks of 32 contacts: their inputs are gathered into
 // lanes (a structure of arrays), solved W at a time with GCC's vector extensions, and the results
-// scattered back into the store. The lane code is detectRound, kinematics and roundHertzForce
-// (contact_kernels.cpp, contact_force.hpp, round_contact.hpp, mindlin_spring.hpp) written out with
+// scattered back into the store. The lane code is detectRound (detectSpheres, detectSphereWall),
+// kinematics and roundHertzForce (contact_kernels.cpp, contact_force.hpp, round_contact.hpp,
+// mindlin_spring.hpp) written out with
 // the same operations in the same order (Eigen's 3-vector sums run left to right), every branch
 // computed on every lane and selected (a lane masked out may compute 0/0 or the root of a
 // negative number: no floating-point trap is enabled). The build contracts nothing into fused
@@ -54,6 +55,7 @@ template <int W> [[gnu::always_inline]] inline Lane<W> sqrt(Lane<W> v) {
 struct Block {
   alignas(64) double xA[3][block], xB[3][block], vA[3][block], vB[3][block], wA[3][block], wB[3][block];
   alignas(64) double rA[block], rB[block], mA[block], mB[block];
+  alignas(64) double wallNormal[3][block];  ///< B a plane wall: its normal (its point in xB, its velocity in vB)
   alignas(64) double spring[3][block];
   alignas(64) double normal[3][block], point[3][block], force[3][block];
   alignas(64) double overlap[block], normalForce[block], damping[block], stiffness[block], area[block];
@@ -89,14 +91,20 @@ struct Constants {
   double range, cutoff, fourThirdsE, twoE, eightG, dampingScale, friction, dt, rootNormal = 0.0, rootTangential = 0.0;
 };
 
-/// Lanes i..i+W-1 of the block: detectRound (detectSpheres), then within range kinematics and
-/// roundHertzForce; a lane out of range gets the group kernel's cleared load and spring.
+template <int W> using Mask = decltype(Lane<W>{} < Lane<W>{});  ///< per lane 0, or -1 (all bits)
+
+/// What detection hands the law, per lane.
+template <int W> struct Detected {
+  Lane3<W> normal, point;
+  Lane<W> overlap;
+  Mask<W> converged, degenerate;
+};
+
+/// Sphere pairs: detectRound's cull by the squared distance, then detectSpheres.
 template <int W>
-[[gnu::always_inline]] inline void solve(Block& l, int i, const Constants& c) {
+[[gnu::always_inline]] inline Detected<W> detectPairs(const Block& l, int i, const Constants& c) {
   const Lane3<W> xA = load<W>(l.xA, i), xB = load<W>(l.xB, i);
   const Lane<W> rA = load<W>(l.rA + i), rB = load<W>(l.rB + i), zero{}, one = zero + 1.0, half = zero + 0.5;
-  const Lane3<W> none{zero, zero, zero};
-  // detectRound / detectSpheres
   const Lane3<W> d = xB - xA;
   const Lane<W> squared = dot(d, d), reach = rA + rB + c.cutoff;
   const auto inReach = ~(squared > reach * reach);
@@ -108,14 +116,48 @@ template <int W>
   const Lane3<W> n = select<W>(converged, Lane3<W>{d.x / distance, d.y / distance, d.z / distance}, {zero, zero, one});
   const Lane<W> overlap = converged ? rA + rB - distance : degenerate ? rA + rB : apart ? -(gap < 0.0 ? zero : gap) : zero;
   const Lane3<W> pointA = xA + rA * n, pointB = xB - rB * n;
-  const Lane3<W> point = select<W>(touching, half * (pointA + pointB), none);
-  const auto acting = converged & (overlap > -c.range) & (overlap > 0.0);  // in range; roundHertzForce acts
-  // kinematics
-  const Lane3<W> velocityA = load<W>(l.vA, i) + cross(load<W>(l.wA, i), point - xA);
-  const Lane3<W> relative = load<W>(l.vB, i) + cross(load<W>(l.wB, i), point - xB) - velocityA;
-  const Lane<W> mA = load<W>(l.mA + i), mB = load<W>(l.mB + i), mass = mA * mB / (mA + mB);
+  return {n, select<W>(touching, half * (pointA + pointB), {zero, zero, zero}), overlap, converged, degenerate};
+}
+
+/// A sphere against a plane wall (B: the wall's point in xB, its normal in wallNormal):
+/// detectSphereWall.
+template <int W>
+[[gnu::always_inline]] inline Detected<W> detectWalls(const Block& l, int i, const Constants& c) {
+  const Lane3<W> xA = load<W>(l.xA, i), wallPoint = load<W>(l.xB, i), wallNormal = load<W>(l.wallNormal, i);
+  const Lane<W> rA = load<W>(l.rA + i), zero{}, one = zero + 1.0, half = zero + 0.5;
+  const Lane3<W> n{-wallNormal.x, -wallNormal.y, -wallNormal.z};
+  const Lane3<W> pointA = xA + rA * n;
+  const Lane<W> depth = dot(wallPoint - pointA, wallNormal), gap = -depth;
+  const auto converged = ~(gap > c.cutoff);
+  const Lane3<W> pointB = pointA + depth * wallNormal;
+  return {select<W>(converged, n, {zero, zero, one}), select<W>(converged, half * (pointA + pointB), {zero, zero, zero}),
+          converged ? depth : -(gap < 0.0 ? zero : gap), converged, Mask<W>{}};
+}
+
+/// Lanes i..i+W-1 of the block: detection, then within range kinematics and roundHertzForce; a
+/// lane out of range gets the group kernel's cleared load and spring.
+template <int W, bool OnWall>
+[[gnu::always_inline]] inline void solve(Block& l, int i, const Constants& c) {
+  const Detected<W> t = OnWall ? detectWalls<W>(l, i, c) : detectPairs<W>(l, i, c);
+  const Lane3<W>& n = t.normal;
+  const Lane<W>& overlap = t.overlap;
+  const Lane<W> zero{};
+  const Lane3<W> none{zero, zero, zero};
+  const auto acting = t.converged & (overlap > -c.range) & (overlap > 0.0);  // in range; roundHertzForce acts
+  // kinematics (a plane's surface moves with the wall's velocity, in vB)
+  const Lane3<W> xA = load<W>(l.xA, i);
+  const Lane<W> rA = load<W>(l.rA + i), mA = load<W>(l.mA + i);
+  const Lane3<W> velocityA = load<W>(l.vA, i) + cross(load<W>(l.wA, i), t.point - xA);
+  Lane3<W> relative = load<W>(l.vB, i) - velocityA;
+  Lane<W> mass = mA, reducedRadius = rA;
+  if constexpr (!OnWall) {
+    const Lane<W> rB = load<W>(l.rB + i), mB = load<W>(l.mB + i);
+    relative = load<W>(l.vB, i) + cross(load<W>(l.wB, i), t.point - load<W>(l.xB, i)) - velocityA;
+    mass = mA * mB / (mA + mB);
+    reducedRadius = rA * rB / (rA + rB);
+  }
   // roundHertzForce
-  const Lane<W> a = sqrt<W>(rA * rB / (rA + rB) * overlap);
+  const Lane<W> a = sqrt<W>(reducedRadius * overlap);
   const Lane<W> rootMassRadius = c.dampingScale * sqrt<W>(mass * a);
   const Lane<W> damping = rootMassRadius * c.rootNormal * -dot(relative, n);
   const Lane<W> normalForce = c.fourThirdsE * a * overlap + damping;
@@ -136,11 +178,11 @@ template <int W>
     spring = select<W>(slip, select<W>(k > 0.0, held, none), spring);
     force = force + select<W>(slip, capped, Ft);
   }
-  put<W>(l.normal, i, n), put<W>(l.point, i, point), put(l.overlap + i, overlap);
+  put<W>(l.normal, i, n), put<W>(l.point, i, t.point), put(l.overlap + i, overlap);
   put<W>(l.force, i, select<W>(acting, force, none)), put<W>(l.spring, i, select<W>(acting, spring, none));
   put(l.normalForce + i, acting ? normalForce : zero), put(l.damping + i, acting ? damping : zero);
   put(l.stiffness + i, acting ? c.twoE * a : zero), put(l.area + i, acting ? std::numbers::pi * a * a : zero);
-  put(l.degenerate + i, degenerate), put(l.converged + i, converged), put(l.acting + i, acting);
+  put(l.degenerate + i, t.degenerate), put(l.converged + i, t.converged), put(l.acting + i, acting);
 }
 
 /// What a thread's share counts for the step's statistics.
@@ -150,7 +192,7 @@ struct Counts {
 
 /// Contacts first .. first + count - 1 of the members gathered into the block's lanes, padded to a
 /// whole vector with copies of the last (solved, never scattered).
-template <int W>
+template <int W, bool OnWall>
 [[gnu::always_inline]] inline void gather(Block& l, const std::uint32_t* members, int count, const InteractionScene& scene,
                                           const ContactStore& s, std::ptrdiff_t left) {
   const ParticleStore& p = scene.particles;
@@ -158,17 +200,22 @@ template <int W>
   for (int j = 0; j < lanes; ++j) {
     if (j < count && j + prefetchAhead < left) s.prefetch(members[j + prefetchAhead]);
     const std::uint32_t k = members[std::min(j, count - 1)], a = s.a[k], b = s.b[k];
-    put(l.xA, j, p.position[a]), put(l.xB, j, p.position[b]);
-    put(l.vA, j, p.velocity[a]), put(l.vB, j, p.velocity[b]);
-    put(l.wA, j, p.angularVelocity[a]), put(l.wB, j, p.angularVelocity[b]);
-    l.rA[j] = p.boundingRadius[a], l.rB[j] = p.boundingRadius[b];
-    l.mA[j] = p.mass[a], l.mB[j] = p.mass[b];
+    put(l.xA, j, p.position[a]), put(l.vA, j, p.velocity[a]), put(l.wA, j, p.angularVelocity[a]);
+    l.rA[j] = p.boundingRadius[a], l.mA[j] = p.mass[a];
+    if constexpr (OnWall) {
+      const Wall& wall = scene.walls[b & ~wallFlag];
+      put(l.xB, j, wall.plane.point), put(l.vB, j, wall.velocity), put(l.wallNormal, j, wall.plane.normal);
+    } else {
+      put(l.xB, j, p.position[b]), put(l.vB, j, p.velocity[b]), put(l.wB, j, p.angularVelocity[b]);
+      l.rB[j] = p.boundingRadius[b], l.mB[j] = p.mass[b];
+    }
     put(l.spring, j, s.spring[k]);
   }
 }
 
 /// The block's results into the store: what the group kernel writes for a round contact.
-inline void scatter(const Block& l, const std::uint32_t* members, int count, ContactStore& s, Counts& counts) {
+template <bool OnWall>
+[[gnu::always_inline]] inline void scatter(const Block& l, const std::uint32_t* members, int count, ContactStore& s, Counts& counts) {
   for (int j = 0; j < count; ++j) {
     const std::uint32_t k = members[j];
     const bool acting = l.acting[j] != 0;
@@ -188,10 +235,10 @@ inline void scatter(const Block& l, const std::uint32_t* members, int count, Con
     counts.degenerate += l.degenerate[j] != 0;
     counts.deep += acting && l.overlap[j] > 0.5 * l.rA[j];
   }
-  counts.calls += count;
+  if constexpr (!OnWall) counts.calls += count;  // the detector's calls: particle pairs only
 }
 
-template <int W>
+template <int W, bool OnWall>
 [[gnu::always_inline]] inline Counts solveMembers(std::span<const std::uint32_t> members, const Constants& c,
                                                   const InteractionScene& scene, ContactStore& s) {
   Block l;
@@ -199,38 +246,40 @@ template <int W>
   const auto size = static_cast<std::ptrdiff_t>(members.size());
   for (std::ptrdiff_t first = 0; first < size; first += block) {
     const int count = static_cast<int>(std::min<std::ptrdiff_t>(block, size - first));
-    gather<W>(l, members.data() + first, count, scene, s, size - first);
-    for (int i = 0; i < count; i += W) solve<W>(l, i, c);
-    scatter(l, members.data() + first, count, s, counts);
+    gather<W, OnWall>(l, members.data() + first, count, scene, s, size - first);
+    for (int i = 0; i < count; i += W) solve<W, OnWall>(l, i, c);
+    scatter<OnWall>(l, members.data() + first, count, s, counts);
   }
   return counts;
 }
 
-Counts solveBaseline(std::span<const std::uint32_t> members, const Constants& c, const InteractionScene& scene, ContactStore& s) {
-  return solveMembers<2>(members, c, scene, s);
+Counts solveBaseline(bool walls, std::span<const std::uint32_t> members, const Constants& c, const InteractionScene& scene,
+                     ContactStore& s) {
+  return walls ? solveMembers<2, true>(members, c, scene, s) : solveMembers<2, false>(members, c, scene, s);
 }
 #if defined(__x86_64__)
-[[gnu::target("arch=x86-64-v3")]] Counts solveAvx2(std::span<const std::uint32_t> members, const Constants& c,
+[[gnu::target("arch=x86-64-v3")]] Counts solveAvx2(bool walls, std::span<const std::uint32_t> members, const Constants& c,
                                                    const InteractionScene& scene, ContactStore& s) {
-  return solveMembers<4>(members, c, scene, s);
+  return walls ? solveMembers<4, true>(members, c, scene, s) : solveMembers<4, false>(members, c, scene, s);
 }
 #endif
 
 }  // namespace
 
-void roundHertzPairs(SimdPath path, std::span<const std::uint32_t> members, const ContactModel& model,
-                     const InteractionScene& scene, ContactStore& s, ContactStatistics& statistics) {
+void roundHertzContacts(SimdPath path, PairKind kind, std::span<const std::uint32_t> members, const ContactModel& model,
+                        const InteractionScene& scene, ContactStore& s, ContactStatistics& statistics) {
   const Constants c(model, scene);
+  const bool walls = kind == PairKind::SphereWall;
   Counts counts;
   switch (path) {
-    case SimdPath::Scalar: throw std::logic_error("roundHertzPairs: the scalar path is the group kernel's");
-    case SimdPath::Baseline: counts = solveBaseline(members, c, scene, s); break;
+    case SimdPath::Scalar: throw std::logic_error("roundHertzContacts: the scalar path is the group kernel's");
+    case SimdPath::Baseline: counts = solveBaseline(walls, members, c, scene, s); break;
     case SimdPath::Avx2:
 #if defined(__x86_64__)
-      counts = solveAvx2(members, c, scene, s);
+      counts = solveAvx2(walls, members, c, scene, s);
       break;
 #else
-      throw std::logic_error("roundHertzPairs: no AVX2 path outside x86-64");
+      throw std::logic_error("roundHertzContacts: no AVX2 path outside x86-64");
 #endif
   }
 #pragma omp critical(sqdem_contact_statistics)
