@@ -252,11 +252,10 @@ int runCommand(const Arguments& args) {
       threads = static_cast<int>(n);
     } else if (a == "--simd") {
       const std::string v = args[++i];
-      const std::vector<SimdPath> available = availableSimdPaths();
       simd = simdPathNamed(v);
-      if (!simd || std::find(available.begin(), available.end(), *simd) == available.end()) {
+      if (!simd || !runsHere(*simd)) {
         std::string names;
-        for (const SimdPath path : available) names += (names.empty() ? "" : ", ") + std::string(simdPathName(path));
+        for (const SimdPath path : availableSimdPaths()) names += (names.empty() ? "" : ", ") + std::string(simdPathName(path));
         std::fprintf(stderr, "sqdem run: --simd = '%s': expected one this CPU runs: %s\n", v.c_str(), names.c_str());
         return 2;
       }

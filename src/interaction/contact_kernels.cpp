@@ -18,10 +18,6 @@
 namespace sqdem {
 namespace {
 
-/// How many contacts ahead a group kernel prefetches (ContactStore::prefetch): a few us ahead for
-/// spheres, tens of us for ellipsoids; 24 contacts' records (~6-11 kB) stay well inside L1.
-constexpr std::ptrdiff_t prefetchDistance = 24;
-
 Pose poseOf(const ParticleStore& p, std::uint32_t i) { return {p.position[i], p.orientation[i]}; }
 
 /// Whether a group computes curvatures from a cache (curvature_cache.hpp) rather than every step.
@@ -196,7 +192,7 @@ void groupKernel(std::span<const std::uint32_t> members, const ContactModel& pai
   const auto count = static_cast<std::ptrdiff_t>(members.size());
   for (std::ptrdiff_t m = 0; m < count; ++m) {
     const std::uint32_t k = members[m];
-    if (m + prefetchDistance < count) s.prefetch(members[m + prefetchDistance]);
+    if (m + ContactStore::prefetchAhead < count) s.prefetch(members[m + ContactStore::prefetchAhead]);
     [[maybe_unused]] const detail::ContactLoad before = Ledger ? detail::ContactLoad{s.normal[k], s.force[k], s.load[k]}
                                                                : detail::ContactLoad{};
     [[maybe_unused]] const Vec3 pointBefore = Ledger ? s.point[k] : Vec3::Zero();

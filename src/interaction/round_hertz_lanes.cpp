@@ -27,8 +27,7 @@
 namespace sqdem::detail {
 namespace {
 
-constexpr int block = 32;                    ///< contacts per gather: 10.5 kB of lanes, well inside L1
-constexpr std::ptrdiff_t prefetchAhead = 24;  ///< contacts, as the group kernels (contact_kernels.cpp)
+constexpr int block = 32;  ///< contacts per gather: 10.5 kB of lanes, well inside L1
 
 template <int W> struct VectorOf { typedef double type __attribute__((vector_size(8 * W))); };
 template <int W> using Lane = typename VectorOf<W>::type;  ///< W contacts' values of one quantity
@@ -198,7 +197,7 @@ template <int W, bool OnWall>
   const ParticleStore& p = scene.particles;
   const int lanes = (count + W - 1) / W * W;
   for (int j = 0; j < lanes; ++j) {
-    if (j < count && j + prefetchAhead < left) s.prefetch(members[j + prefetchAhead]);
+    if (j < count && j + ContactStore::prefetchAhead < left) s.prefetch(members[j + ContactStore::prefetchAhead]);
     const std::uint32_t k = members[std::min(j, count - 1)], a = s.a[k], b = s.b[k];
     put(l.xA, j, p.position[a]), put(l.vA, j, p.velocity[a]), put(l.wA, j, p.angularVelocity[a]);
     l.rA[j] = p.boundingRadius[a], l.mA[j] = p.mass[a];

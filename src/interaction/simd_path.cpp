@@ -1,5 +1,6 @@
 #include "sqdem/interaction/simd_path.hpp"
 
+#include <algorithm>
 #include <array>
 
 namespace sqdem {
@@ -16,6 +17,11 @@ std::vector<SimdPath> availableSimdPaths() {
   if (__builtin_cpu_supports("x86-64-v3")) paths.push_back(SimdPath::Avx2);
 #endif
   return paths;
+}
+
+bool runsHere(SimdPath path) {
+  const std::vector<SimdPath> paths = availableSimdPaths();
+  return std::find(paths.begin(), paths.end(), path) != paths.end();
 }
 
 SimdPath widestSimdPath() { return availableSimdPaths().back(); }

@@ -374,8 +374,7 @@ void World::enableEnergyLedger() {
 }
 
 void World::setSimdPath(SimdPath path) {
-  const std::vector<SimdPath> available = availableSimdPaths();
-  if (std::ranges::find(available, path) == available.end()) {
+  if (!runsHere(path)) {
     throw std::invalid_argument("World: this CPU cannot run the '" + std::string(simdPathName(path)) + "' kernels");
   }
   simd_ = path;

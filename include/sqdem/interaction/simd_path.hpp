@@ -21,6 +21,8 @@ enum class SimdPath : std::uint8_t {
 
 /// The paths this CPU (and its operating system) runs, narrowest first.
 std::vector<SimdPath> availableSimdPaths();
+/// Whether path is one of them.
+bool runsHere(SimdPath path);
 /// The widest of them: what a World uses unless told otherwise.
 SimdPath widestSimdPath();
 /// "scalar", "baseline", "avx2".
