@@ -1,5 +1,5 @@
 // The registered normal laws (law_registry.hpp) in the engine: the World's contact store,
-// histories and ranges give the same forces as the single-contact driver (cli/driven_law.cpp)
+// histories and ranges give the same forces as the single-contact driver (probe/driven_law.hpp)
 // on the same overlap history, and the adhesive laws reproduce their closed forms in motion.
 // Two bodies are driven quasi-statically (positions prescribed, World::computeForces) or move
 // freely (World::step); no damping or friction unless stated.
@@ -10,7 +10,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "cli/driven_law.hpp"
+#include "sqdem/probe/driven_law.hpp"
 #include "sqdem/mechanics/sticking_velocity.hpp"
 #include "sqdem/world/world.hpp"
 
@@ -69,7 +69,7 @@ std::vector<double> leg(double from, double to, int n) {
 struct LawCase {
   const char* name;
   NormalLaw engine;
-  cli::json driver;
+  probe::json driver;
 };
 
 std::vector<LawCase> laws() {
@@ -117,12 +117,12 @@ TEST(EngineLaws, EachLawEqualsTheDriverOnTheSameHistory) {
     for (const LawCase& law : laws()) {
       World world = pair(body.shape, law.engine);
       const double volumeRadius = body.shape.volumeEquivalentRadius();
-      cli::DrivenLaw driver(law.driver, law.name, body.tips, {E, nu, E, nu}, 2.0 * volumeRadius);
+      probe::DrivenLaw driver(law.driver, law.name, body.tips, {E, nu, E, nu}, 2.0 * volumeRadius);
       double worst = 0.0, largest = 0.0;
       int engineContacts = 0, driverContacts = 0;
       for (const double delta : path) {
         const Sample s = driveTo(world, delta);
-        const cli::LawSample d = driver.at(s.overlap);
+        const probe::LawSample d = driver.at(s.overlap);
         engineContacts += s.contact;
         driverContacts += d.contact;
         worst = std::max(worst, std::abs(s.force - d.force));
@@ -223,7 +223,7 @@ TEST(EngineLaws, EllipticJkrEllipsoidPullOffEqualsTheDriver) {
   const double gamma = 0.05;
   const Body body = bodies()[1];
   World world = pair(body.shape, EllipticJkrLaw{gamma});
-  const cli::DrivenLaw driver({{"type", "elliptic_jkr"}, {"surface_energy", gamma}}, "law", body.tips, {E, nu, E, nu}, 0.0);
+  const probe::DrivenLaw driver({{"type", "elliptic_jkr"}, {"surface_energy", gamma}}, "law", body.tips, {E, nu, E, nu}, 0.0);
   const double pullOff = driver.constants()["pull_off_force"].get<double>();
   const double scale = 2e-8;
   for (double d : leg(-scale, scale, 100)) driveTo(world, d);
@@ -302,7 +302,7 @@ TEST(EngineLaws, BeckerKamlahPlatePressIsTwoDriverContactsInSeries) {
   world.addParticle(0, 0, Vec3(0.0, 0.0, radius), Quat::Identity());
   world.setTimeStep(dt);            // 0.2 x the Rayleigh time
   world.setViscousDamping(2.5e7);   // 1/s
-  cli::DrivenLaw driver({{"type", "becker_kamlah"}, {"yield_strength", Y}}, "becker_kamlah",
+  probe::DrivenLaw driver({{"type", "becker_kamlah"}, {"yield_strength", Y}}, "becker_kamlah",
                         {radius, radius, 1.0, 0.5 * radius},
                         {nmc.youngsModulus, nmc.poissonRatio, nmc.youngsModulus, nmc.poissonRatio}, 2.0 * radius);
   const double yieldOverlap = driver.yield()->overlap, deepest = 5.0 * yieldOverlap;
@@ -314,7 +314,7 @@ TEST(EngineLaws, BeckerKamlahPlatePressIsTwoDriverContactsInSeries) {
     world.step();
     if (s % sampleEvery != 0 && s != steps) continue;  // and the turning point: the largest overlap
     const double travel = 2.0 * radius - plate.plane.point.z();
-    const cli::LawSample d = driver.at(0.5 * travel);
+    const probe::LawSample d = driver.at(0.5 * travel);
     worst = std::max(worst, std::abs(plate.force.z() - d.force));  // the sphere pushes the plate up: > 0
     largest = std::max(largest, d.force);
     if (freeTravel < 0.0 && s > steps && !(d.force > 0.0)) freeTravel = travel;

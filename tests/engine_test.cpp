@@ -4,8 +4,10 @@
 #include <gtest/gtest.h>
 #include <omp.h>
 
+#include <cctype>
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <numbers>
 #include <fstream>
 
@@ -209,15 +211,32 @@ TEST(Engine, HilbertReorderingChangesNoBit) {
   EXPECT_EQ(inserted.walls()[0].force, reordered.walls()[0].force);
 }
 
+/// The message a scene's checks give, from the file or from its text (sceneFromText), or "".
+std::string sceneErrorOf(const std::function<Scene()>& load) {
+  try {
+    buildWorld(load());  // the loader checks the keys, the builder the placement
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+/// The scene fails with `expected` in its message, naming the file, and as a document built in
+/// code (its text) with the same message naming the document instead of the file and line.
 void expectSceneError(const std::string& text, const std::string& expected) {
   const std::string path = writeScene("bad", text);
-  try {
-    buildWorld(loadScene(path));  // the loader checks the keys, the builder the placement
-    ADD_FAILURE() << "no error for: " << expected;
-  } catch (const SceneError& e) {
-    EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+  const std::string fromFile = sceneErrorOf([&] { return loadScene(path); });
+  const std::string fromText = sceneErrorOf([&] {
+    return sceneFromText(text, {"<document>", std::filesystem::temp_directory_path()});
+  });
+  ASSERT_FALSE(fromFile.empty()) << "no error for: " << expected;
+  EXPECT_EQ(fromFile.rfind(path, 0), 0u) << fromFile;
+  EXPECT_NE(fromFile.find(expected), std::string::npos) << fromFile;
+  std::size_t rest = path.size();
+  if (rest < fromFile.size() && fromFile[rest] == ':' && std::isdigit(static_cast<unsigned char>(fromFile[rest + 1]))) {
+    rest = fromFile.find(':', rest + 1);
   }
+  EXPECT_EQ(fromText, "<document>" + fromFile.substr(rest));
 }
 
 // Explicit particles: the `particles:` list places each particle with its pose and velocities,
@@ -399,6 +418,28 @@ TEST(Engine, DetectorToleranceKeySetsTheEnginesSolve) {
   EXPECT_EQ(buildWorld(loadScene(writeScene("plain", bedScene))).detectorControl().tolerance, DetectorControl{}.tolerance);
   const World tight = buildWorld(loadScene(writeScene("tight", replaced(bedScene, "seed: 7", "seed: 7\ndetector_tolerance: 1e-10"))));
   EXPECT_EQ(tight.detectorControl().tolerance, 1e-10);
+}
+
+// A shape given by its semi-axes has exactly those (not semi-axes rebuilt from a volume radius
+// and aspect ratios: 1e-3 came back as 0.9999999999999998e-3), from a file and from a text.
+TEST(Engine, SemiAxesAreKeptExactly) {
+  const std::string text = replaced(replaced(bedScene, "grains: {volume_radius: [0.4e-3, 0.6e-3], aspect_b: [0.6, 1.2], aspect_c: [0.6, 1.2]}",
+                                             "grains: {semi_axes: [1.0e-3, 0.7e-3, 0.3e-3], n1: 3}\n  ball: {semi_axes: [1.0e-3, 1.0e-3, 1.0e-3]}"),
+                                    "  - {count: 60, shape: grains",
+                                    "  - {count: 5, shape: ball, material: glass, region: {lo: [0, 0, 1.0e-3], hi: [6.0e-3, 6.0e-3, 11.0e-3]}}\n"
+                                    "  - {count: 5, shape: grains");
+  for (const Scene& scene : {loadScene(writeScene("exact", text)), sceneFromText(text)}) {
+    const World world = buildWorld(scene);
+    ASSERT_EQ(world.particles().size(), 10u);
+    for (std::size_t i = 0; i < world.particles().size(); ++i) {
+      const Superquadric& s = world.shapes()[world.particles().shape[i]];
+      const bool ball = s.n1() == 2.0;
+      EXPECT_EQ(s.a(), 1.0e-3);
+      EXPECT_EQ(s.b(), ball ? 1.0e-3 : 0.7e-3);
+      EXPECT_EQ(s.c(), ball ? 1.0e-3 : 0.3e-3);
+      EXPECT_EQ(s.n1(), ball ? 2.0 : 3.0);
+    }
+  }
 }
 
 TEST(Engine, SceneErrorsNameLineKeyAndWhatIsAllowed) {

@@ -10,12 +10,19 @@
 #include <iostream>
 
 #include "commands.hpp"
-#include "json_input.hpp"
+#include "sqdem/probe/json_input.hpp"
 #include "sqdem/contact/detector.hpp"
 #include "sqdem/mechanics/elliptic.hpp"
 
 namespace sqdem::cli {
 namespace {
+
+using probe::InputError;
+using probe::json;
+using probe::number;
+using probe::Particle;
+using probe::readParticle;
+using probe::rejectUnknownKeys;
 
 json toJson(const Vec3& v) { return json::array({v.x(), v.y(), v.z()}); }
 
@@ -85,7 +92,7 @@ int geometryProbe(const Arguments& args) {
     return 2;
   }
   try {
-    std::cout << probe(readJsonInput(args[0])).dump(2) << "\n";
+    std::cout << probe(probe::readJsonInput(args[0])).dump(2) << "\n";
     return 0;
   } catch (const InputError& e) {
     std::cerr << "sqdem geometry: " << (args[0] == "-" ? "<stdin>" : args[0]) << ": " << e.what() << "\n";

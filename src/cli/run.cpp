@@ -11,8 +11,6 @@
 // directory), on any rank, exits 1 everywhere with one message; one a rank meets alone while
 // running ends every rank (MPI_Abort).
 
-#include <omp.h>
-
 #include <algorithm>
 #include <csignal>
 #include <cstdio>
@@ -24,12 +22,9 @@
 #include "commands.hpp"
 #include "progress_printer.hpp"
 #include "sqdem/distributed/mpi_communicator.hpp"
-#include "sqdem/scene/build_world.hpp"
-#include "sqdem/io/plain_name.hpp"
 #include "sqdem/io/run_plot.hpp"
-#include "sqdem/scene/output_directory.hpp"
 #include "sqdem/scene/scene_loader.hpp"
-#include "sqdem/scene/stage_runner.hpp"
+#include "sqdem/scene/simulation.hpp"
 #include "sqdem/world/packing_measures.hpp"
 
 namespace sqdem::cli {
@@ -41,7 +36,8 @@ volatile std::sig_atomic_t stopSignal = 0;
 extern "C" void requestStop(int signal) { stopSignal = signal; }
 
 /// Collective: its measures are reduced over the ranks; rank 0 prints (the others' stdout goes nowhere).
-void printSummary(const World& world, const RunReport& report, double wall, const RunOutput& output) {
+void printSummary(const World& world, const RunReport& report, double wall, const FileSink& files) {
+  const RunOutput& output = files.output();
   const Communicator& ranks = world.communicator();
   const ContactStatistics st = world.totalStatistics();
   const PackingMeasures m = measurePacking(world);
@@ -93,11 +89,9 @@ void printSummary(const World& world, const RunReport& report, double wall, cons
   std::printf("ParaView: paraview --script=%s (the particles in their shapes, the walls, the contacts; or open the "
               "series %s_{particles,surfaces,contacts,walls}.pvd)\n",
               (output.directory / (output.name + "_view.py")).string().c_str(), (output.directory / output.name).string().c_str());
-  if (!report.finalParticles.empty()) {
-    std::printf("final state: %s (a particle file: insert it into a scene with insert: [{file: ...}])\n",
-                report.finalParticles.string().c_str());
-  }
-  if (const auto& c = report.compression) {
+  std::printf("final state: %s (a particle file: insert it into a scene with insert: [{file: ...}])\n",
+              files.finalParticles().string().c_str());
+  if (const auto& c = files.compression()) {
     std::printf("compression: peak plate pressure %.4g MPa; coating thickness before %.4g um (porosity %.4f), at the peak "
                 "%.4g um (%.4f), after %.4g um (%.4f)%s; springback %.2f %%, permanent compression %.2f %%\n",
                 c->peakPressure / 1e6, c->thicknessBefore * 1e6, c->porosityBefore, c->thicknessAtPeak * 1e6,
@@ -105,10 +99,10 @@ void printSummary(const World& world, const RunReport& report, double wall, cons
                 c->released ? "" : " (the plate never let go: the last gap)", 100.0 * c->springback(),
                 100.0 * c->permanentCompression());
     std::printf("compression curve: %s%s\n", (output.directory / (output.name + "_compression.csv")).string().c_str(),
-                report.compressionPlot ? (", plot " + report.compressionPlot->string()).c_str() : " (no plot: gnuplot not found)");
+                files.compressionPlot() ? (", plot " + files.compressionPlot()->string()).c_str() : " (no plot: gnuplot not found)");
   }
   if (ranks.rank() != 0) return;
-  const std::optional<fs::path> plot = plotRun(report.log);
+  const std::optional<fs::path> plot = plotRun(files.log());
   std::printf("run plot: %s\n", plot ? plot->string().c_str() : "none (gnuplot not found)");
 }
 
@@ -121,66 +115,38 @@ std::shared_ptr<const Communicator> launchedRanks() {
   return std::make_shared<SerialCommunicator>();
 }
 
-/// Thrown on every rank when a part of the set-up failed on some (its message printed there).
-struct FailedOnSomeRank {};
-
-/// Runs a part of the set-up that may fail on some ranks only (each reads the scene and its
-/// files; rank 0 alone prepares the output directory): when any rank failed, the lowest such
-/// prints its message and every rank throws FailedOnSomeRank.
-void agreed(const Communicator& ranks, const std::function<void()>& part) {
-  std::string error;
-  try {
-    part();
-  } catch (const SceneError& e) {
-    error = e.what();
-  }
-  const double lowest = ranks.min(error.empty() ? static_cast<double>(ranks.size()) : static_cast<double>(ranks.rank()));
-  if (lowest == ranks.size()) return;
-  if (lowest == ranks.rank()) std::fprintf(stderr, "sqdem run: %s\n", error.c_str());
-  throw FailedOnSomeRank();
-}
-
 int runScene(const std::shared_ptr<const Communicator>& communicator, const std::string& scenePath, fs::path outDir,
              int threads, std::optional<SimdPath> simd, const std::string& resume, bool overwrite, double progressEvery) {
   const Communicator& ranks = *communicator;
   const bool speaks = ranks.rank() == 0;  // rank 0 prints and writes the run's files
   Scene scene;
-  agreed(ranks, [&] { scene = loadScene(scenePath); });  // everything is validated before anything runs
-  World world = buildWorld(scene);
-  world.setCommunicator(communicator);
-  const RunPlan plan = planRun(scene, world);
+  agreedSetUp(ranks, [&] { scene = loadScene(scenePath); });  // everything is validated before anything runs
+  RunOptions options;
+  options.threads = threads;
+  options.simd = simd;
+  options.out = outDir.empty() ? fs::path("out") / fs::path(scenePath).stem() : outDir;
+  options.overwrite = overwrite;
+  if (!resume.empty()) options.resume = resume;
+  Simulation simulation(std::move(scene), options, communicator);
+  const World& world = simulation.world();
+  const RunPlan& plan = simulation.plan();
+  const RunProgress& start = simulation.start();
+  const FileSink& files = *simulation.files();
+  const RunOutput& output = files.output();
   const double dt = world.timeStep();
-  RunProgress start;
-  if (!resume.empty()) {
-    start = readRunCheckpoint(resume, scene, world);
-    if (world.timeStep() != dt) throw SceneError(resume + ": the checkpoint's time step differs from the scene's");
-  }
-  if (threads > 0) omp_set_num_threads(threads);
-  if (simd) world.setSimdPath(*simd);
-  const std::string stem = fs::path(scenePath).stem().string();
-  // The scene file's name names the output files and goes into their plot scripts.
-  if (!isPlainName(stem, 100)) {
-    throw SceneError(scenePath + ": the scene file's name (less .yaml) names the output files: it must be 1-100 letters, "
-                     "digits, '_', '.', '-', not starting with '.' or '-'");
-  }
-  RunOutput output{outDir.empty() ? fs::path("out") / stem : outDir,
-                   resume.empty() ? stem : stem + "_from_step" + std::to_string(start.totalSteps)};
-  agreed(ranks, [&] {
-    if (speaks) prepareOutputDirectory(output.directory, output.name, resume.empty(), overwrite);
-  });
   const long long particles = ranks.sum(static_cast<long long>(world.particles().size()));
   if (speaks) {
     for (const std::string& w : plan.warnings) std::fprintf(stderr, "sqdem run: warning: %s\n", w.c_str());
   }
   std::printf("sqdem run: %s: %lld particles, %zu walls, dt = %.4g s (%.3g x the Rayleigh time), %d rank(s) x %d "
               "thread(s), %s kernels, output in %s\n", scenePath.c_str(), particles, world.walls().size(), dt,
-              dt / plan.rayleighTime, ranks.size(), omp_get_max_threads(), std::string(simdPathName(world.simdPath())).c_str(),
+              dt / plan.rayleighTime, ranks.size(), world.threads(), std::string(simdPathName(world.simdPath())).c_str(),
               output.directory.string().c_str());
   if (!resume.empty()) {
     std::printf("resumed from %s at step %lld, %s '%s'\n", resume.c_str(), static_cast<long long>(start.totalSteps),
                 start.newStages ? "under this scene's stages (a new protocol, every contact history kept), from stage"
                                 : "stage",
-                scene.stages[start.stage].name.c_str());
+                simulation.scene().stages[start.stage].name.c_str());
   }
   std::fflush(stdout);  // seen at once when stdout is a pipe or a log file
 
@@ -188,8 +154,8 @@ int runScene(const std::shared_ptr<const Communicator>& communicator, const std:
   std::signal(SIGINT, requestStop);
   std::signal(SIGTERM, requestStop);
   std::signal(SIGUSR1, requestStop);  // mpirun passes it on and, unlike SIGTERM, does not kill the ranks a second later
-  ProgressPrinter printer(scene, progressEvery, speaks);
-  const RunReport report = runStages(scene, world, plan, start, output, printer, stopSignal);
+  ProgressPrinter printer(simulation.scene(), progressEvery, speaks);
+  const RunReport& report = simulation.run(printer, stopSignal);
   printer.clearLine();
   switch (report.outcome) {  // every rank has the same; rank 0 tells it
     case RunOutcome::NumericalTrouble:
@@ -198,20 +164,21 @@ int runScene(const std::shared_ptr<const Communicator>& communicator, const std:
                    "(%.4g s); the automatic step is 0.2 x it (lower time_step or time_step_fraction).\n"
                    "  The log is in %s; checkpoints written so far are in %s\n",
                    report.totalSteps, world.time(), report.trouble.c_str(), dt, dt / plan.rayleighTime,
-                   plan.rayleighTime, report.log.string().c_str(), output.directory.string().c_str());
+                   plan.rayleighTime, files.log().string().c_str(), output.directory.string().c_str());
       return 3;
     case RunOutcome::Interrupted:
       if (speaks) std::fprintf(stderr, "sqdem run: %s at step %ld (t = %.6g s); log %s, checkpoint %s\n"
                    "  resume with: sqdem run %s --resume %s --out %s\n",
                    stopSignal == SIGINT ? "interrupted" : stopSignal == SIGUSR1 ? "stopped (SIGUSR1)" : "terminated",
                    report.totalSteps, world.time(),
-                   report.log.string().c_str(), report.latestCheckpoint.string().c_str(), scenePath.c_str(),
-                   report.latestCheckpoint.string().c_str(), output.directory.string().c_str());
+                   files.log().string().c_str(), files.latestCheckpoint().string().c_str(), scenePath.c_str(),
+                   files.latestCheckpoint().string().c_str(), output.directory.string().c_str());
       return 130;
+    case RunOutcome::Paused:  // no limit was given
     case RunOutcome::Completed:
       break;
   }
-  printSummary(world, report, printer.elapsed(), output);
+  printSummary(world, report, printer.elapsed(), files);
   return 0;
 }
 
@@ -288,10 +255,8 @@ int runCommand(const Arguments& args) {
   if (ranks->rank() != 0 && !std::freopen("/dev/null", "w", stdout)) return 1;  // rank 0 prints for the run
   try {
     return runScene(ranks, scene, outDir, threads, simd, resume, overwrite, progressEvery);
-  } catch (const SceneError& e) {  // found alike on every rank, before the run
+  } catch (const SceneError& e) {  // found alike on every rank (agreedSetUp), before the run
     if (ranks->rank() == 0) std::fprintf(stderr, "sqdem run: %s\n", e.what());
-    return 1;
-  } catch (const FailedOnSomeRank&) {  // before the run; the message is printed
     return 1;
   } catch (const std::exception& e) {  // while running (output that cannot be written): maybe on this rank alone
     std::fprintf(stderr, "sqdem run: %s\n", e.what());

@@ -25,8 +25,10 @@ double sample(std::mt19937_64& rng, const std::array<double, 2>& range) {
   return range[0] == range[1] ? range[0] : std::uniform_real_distribution<double>(range[0], range[1])(rng);
 }
 
-/// A superquadric of the family with the sampled volume-equivalent radius and aspect ratios.
+/// A superquadric of the family: its semi-axes as given, or the sampled volume-equivalent radius
+/// and aspect ratios.
 Superquadric sampleShape(std::mt19937_64& rng, const ShapeFamily& f) {
+  if (f.semiAxes) return Superquadric(f.semiAxes->x(), f.semiAxes->y(), f.semiAxes->z(), f.n1, f.n2);
   const double radius = sample(rng, f.volumeRadius), b = sample(rng, f.aspectB), c = sample(rng, f.aspectC);
   const double unit = Superquadric(1.0, b, c, f.n1, f.n2).volumeEquivalentRadius();
   const double s = radius / unit;

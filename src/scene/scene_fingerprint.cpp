@@ -50,6 +50,7 @@ SceneFingerprint sceneFingerprint(const Scene& scene) {
   next();
   for (const ShapeFamily& s : scene.shapes) {
     h.all(s.name, s.volumeRadius[0], s.volumeRadius[1], s.aspectB[0], s.aspectB[1], s.aspectC[0], s.aspectC[1], s.n1, s.n2);
+    if (s.semiAxes) h(*s.semiAxes);  // (the particles' shapes: before, the ranges' round-off of them)
   }
   next();
   for (const InteractionSpec& i : scene.interactions) {

@@ -1,17 +1,14 @@
 #include "sqdem/scene/stage_runner.hpp"
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
-#include "sqdem/io/run_log.hpp"
-#include "sqdem/io/vtk_writer.hpp"
-#include "sqdem/scene/compression_report.hpp"
-#include "sqdem/scene/particle_file.hpp"
 #include "sqdem/scene/build_world.hpp"
 #include "sqdem/world/packing_measures.hpp"
-#include "sqdem/world/run_health.hpp"
 
 namespace sqdem {
 namespace {
@@ -88,113 +85,139 @@ double kineticEnergyRatio(const World& world, const Vec3& gravity, double veloci
   return scale > 0.0 ? world.kineticEnergy() / scale : 0.0;
 }
 
-RunReport runStages(const Scene& scene, World& world, const RunPlan& plan, const RunProgress& start,
-                    const RunOutput& output, RunObserver& observer, const volatile std::sig_atomic_t& stop) {
-  const bool fresh = start.totalSteps == 0 && start.stage == 0 && start.stepInStage == 0;
-  VtkSeries vtk(output.directory, output.name, {scene.output.contacts, plan.surfaceResolution, scene.output.vtkCompression});
-  RunLog log(output.directory / (output.name + ".csv"), world, scene.output.compressionWall);
-  std::optional<CompressionRecord> compression;
-  if (scene.output.compressionWall) compression.emplace();
-  const auto logRow = [&](long step, const std::string& stage) {
-    const std::optional<PlateMeasures> plate = log.row(world, step, stage);
-    if (compression) compression->add(world.time(), *plate);
-  };
-  RunReport report;
-  report.log = log.path();
-  report.latestCheckpoint = output.directory / (output.name + "_latest.checkpoint");
-  if (fresh) world.computeForces();  // a checkpoint carries its forces; recomputing would advance the springs
-  vtk.writeFrame(world);
-  if (fresh) logRow(0, "initial");
-  RunHealth health(world);
+StageRunner::StageRunner(const Scene& scene, World& world, const RunPlan& plan, const RunProgress& start, RunSink& sink)
+    : scene_(scene), world_(world), plan_(plan), sink_(sink), start_(start), stage_(start.stage) {
+  report_.totalSteps = start.totalSteps;
+}
 
-  const double dt = world.timeStep();
-  auto lastCheckpoint = Clock::now();
-  long& totalSteps = report.totalSteps;
-  totalSteps = start.totalSteps;
-  for (std::size_t stageIndex = start.stage; stageIndex < scene.stages.size(); ++stageIndex) {
-    const StageSpec& stage = scene.stages[stageIndex];
-    for (std::size_t w = 0; w < world.walls().size(); ++w) world.walls()[w].velocity = scene.walls[w].velocity;
-    if (stage.wall) world.walls()[*stage.wall].velocity = stage.wallVelocity;
-    for (Wall& w : world.walls()) w.servo.reset();
-    if (stage.servoWall) world.walls()[*stage.servoWall].servo = stage.servo;
-    world.setViscousDamping(stage.viscousDamping);
-    const long steps = plan.stageSteps[stageIndex];
-    const long frameEvery = scene.output.frames ? std::max(1L, steps / static_cast<long>(scene.output.frames)) : 0;
-    const long logEvery = scene.output.logEvery ? static_cast<long>(scene.output.logEvery) : std::max(1L, steps / 200);
-    const bool continuing = stageIndex == start.stage && start.stepInStage > 0;
-    const double stageStart = continuing ? start.stageStart : world.time();
-    std::string reason = "duration reached";
-    for (long s = continuing ? start.stepInStage + 1 : 1; s <= steps; ++s) {
-      if (!stage.wallPath.points.empty()) {  // the velocity that lands the wall on its path at the step's end
-        Wall& w = world.walls()[*stage.wall];
-        const double t = world.time() - stageStart;
-        w.velocity = (stage.wallPath.offset(t + dt) - stage.wallPath.offset(t)) / dt * w.plane.normal;
+void StageRunner::start() {
+  started_ = true;
+  const bool fresh = start_.totalSteps == 0 && start_.stage == 0 && start_.stepInStage == 0;
+  if (fresh) world_.computeForces();  // a checkpoint carries its forces; recomputing would advance the springs
+  sink_.frame(world_);
+  if (fresh) sink_.row(world_, 0, "initial");
+  health_.emplace(world_);
+  lastCheckpoint_ = Clock::now();
+}
+
+void StageRunner::enterStage() {
+  const StageSpec& stage = scene_.stages[stage_];
+  for (std::size_t w = 0; w < world_.walls().size(); ++w) world_.walls()[w].velocity = scene_.walls[w].velocity;
+  if (stage.wall) world_.walls()[*stage.wall].velocity = stage.wallVelocity;
+  for (Wall& w : world_.walls()) w.servo.reset();
+  if (stage.servoWall) world_.walls()[*stage.servoWall].servo = stage.servo;
+  world_.setViscousDamping(stage.viscousDamping);
+  const bool continuing = stage_ == start_.stage && start_.stepInStage > 0 && report_.stepsThisRun == 0;
+  step_ = continuing ? start_.stepInStage : 0;
+  stageStart_ = continuing ? start_.stageStart : world_.time();
+  inStage_ = true;
+}
+
+std::string StageRunner::stepStage(RunObserver& observer, const volatile std::sig_atomic_t& stop) {
+  const StageSpec& stage = scene_.stages[stage_];
+  const long steps = plan_.stageSteps[stage_];
+  const long frameEvery = scene_.output.frames ? std::max(1L, steps / static_cast<long>(scene_.output.frames)) : 0;
+  const long logEvery = scene_.output.logEvery ? static_cast<long>(scene_.output.logEvery) : std::max(1L, steps / 200);
+  const double dt = world_.timeStep();
+  const long s = ++step_;
+  if (!stage.wallPath.points.empty()) {  // the velocity that lands the wall on its path at the step's end
+    Wall& w = world_.walls()[*stage.wall];
+    const double t = world_.time() - stageStart_;
+    w.velocity = (stage.wallPath.offset(t + dt) - stage.wallPath.offset(t)) / dt * w.plane.normal;
+  }
+  world_.step();
+  ++report_.totalSteps;
+  ++report_.stepsThisRun;
+  report_.trouble = health_->afterStep(world_);
+  if (!report_.trouble.empty()) {
+    sink_.row(world_, report_.totalSteps, stage.name);
+    report_.outcome = RunOutcome::NumericalTrouble;
+    return "numerical trouble";
+  }
+  if (s % logEvery == 0) sink_.row(world_, report_.totalSteps, stage.name);
+  if (frameEvery && s % frameEvery == 0) sink_.frame(world_);
+  if (s % 10 == 0 && world_.time() - stageStart_ >= stage.minimumDuration) {
+    std::string reason;
+    if (stage.kineticEnergyRatio > 0.0 && s % 100 == 0 &&
+        kineticEnergyRatio(world_, scene_.gravity, stage.velocityScale) < stage.kineticEnergyRatio) {
+      reason = "kinetic energy ratio below " + std::to_string(stage.kineticEnergyRatio);
+    } else {
+      const double p = stage.wallPressure > 0.0 ? world_.wallPressure(stage.pressureWall) : 0.0;
+      const double phi = stage.porosity > 0.0 ? measurePlate(world_, stage.pressureWall).porosity : 1.0;
+      if (stage.wallPressure > 0.0 && p >= stage.wallPressure) {
+        reason = measuredStop("pressure reached", p, stage.wallPressure, stage.pressureWall, " Pa");
+      } else if (phi <= stage.porosity) {
+        reason = measuredStop("pressed the bed to porosity", phi, stage.porosity, stage.pressureWall, "");
       }
-      world.step();
-      ++totalSteps;
-      ++report.stepsThisRun;
-      report.trouble = health.afterStep(world);
-      if (!report.trouble.empty()) {
-        logRow(totalSteps, stage.name);
-        report.outcome = RunOutcome::NumericalTrouble;
-        return report;
-      }
-      if (s % logEvery == 0) logRow(totalSteps, stage.name);
-      if (frameEvery && s % frameEvery == 0) vtk.writeFrame(world);
-      if (s % 10 == 0 && world.time() - stageStart >= stage.minimumDuration) {
-        if (stage.kineticEnergyRatio > 0.0 && s % 100 == 0 &&
-            kineticEnergyRatio(world, scene.gravity, stage.velocityScale) < stage.kineticEnergyRatio) {
-          reason = "kinetic energy ratio below " + std::to_string(stage.kineticEnergyRatio);
-        } else {
-          const double p = stage.wallPressure > 0.0 ? world.wallPressure(stage.pressureWall) : 0.0;
-          const double phi = stage.porosity > 0.0 ? measurePlate(world, stage.pressureWall).porosity : 1.0;
-          if (stage.wallPressure > 0.0 && p >= stage.wallPressure) {
-            reason = measuredStop("pressure reached", p, stage.wallPressure, stage.pressureWall, " Pa");
-          } else if (phi <= stage.porosity) {
-            reason = measuredStop("pressed the bed to porosity", phi, stage.porosity, stage.pressureWall, "");
-          }
-        }
-        if (reason != "duration reached") {
-          if (!frameEvery || s % frameEvery != 0) vtk.writeFrame(world);
-          break;
-        }
-      }
-      const RunProgress here{stageIndex, s, stageStart, totalSteps};
-      // What each process's own state asks for, agreed over the ranks: stop, a checkpoint by the
-      // clock, an update of the observer.
-      const auto now = Clock::now();
-      std::array<double, 3> asked{
-          stop ? 1.0 : 0.0,
-          scene.output.checkpointMinutes > 0.0 &&
-                  std::chrono::duration<double>(now - lastCheckpoint).count() > 60.0 * scene.output.checkpointMinutes
-              ? 1.0 : 0.0,
-          observer.wantsUpdate() ? 1.0 : 0.0};
-      world.communicator().max(asked);
-      if (asked[0] > 0.0) {
-        logRow(totalSteps, stage.name);
-        writeRunCheckpoint(report.latestCheckpoint, scene, here, world);
-        report.outcome = RunOutcome::Interrupted;
-        return report;
-      }
-      if ((scene.output.checkpointSteps && totalSteps % static_cast<long>(scene.output.checkpointSteps) == 0) ||
-          asked[1] > 0.0) {
-        writeRunCheckpoint(report.latestCheckpoint, scene, here, world);
-        lastCheckpoint = now;
-      }
-      if (asked[2] > 0.0) observer.update(stage, s, steps, report.stepsThisRun, world);
     }
-    logRow(totalSteps, stage.name);
-    observer.stageEnded(stage, reason, world);
-    writeRunCheckpoint(output.directory / (output.name + "_after_" + stage.name + ".checkpoint"), scene,
-                       RunProgress{stageIndex + 1, 0, world.time(), totalSteps}, world);
+    if (!reason.empty()) {
+      if (!frameEvery || s % frameEvery != 0) sink_.frame(world_);
+      return reason;
+    }
   }
-  report.finalParticles = output.directory / (output.name + "_final_particles.csv");
-  writeParticleFile(report.finalParticles, world, scene.materials);
-  if (compression) {
-    report.compression = compression->summary();
-    if (world.communicator().rank() == 0) report.compressionPlot = compression->write(output.directory, output.name);
+  // What each process's own state asks for, agreed over the ranks: stop, a checkpoint by the
+  // clock, an update of the observer.
+  const auto now = Clock::now();
+  std::array<double, 3> asked{
+      stop ? 1.0 : 0.0,
+      sink_.keepsCheckpoints() && scene_.output.checkpointMinutes > 0.0 &&
+              std::chrono::duration<double>(now - lastCheckpoint_).count() > 60.0 * scene_.output.checkpointMinutes
+          ? 1.0 : 0.0,
+      observer.wantsUpdate() ? 1.0 : 0.0};
+  world_.communicator().max(asked);
+  if (asked[2] > 0.0) {  // first: the observer may ask to stop at this step (a callback)
+    observer.update(stage, s, steps, report_.stepsThisRun, world_);
+    if (asked[0] == 0.0) {
+      std::array<double, 1> stopped{stop ? 1.0 : 0.0};
+      world_.communicator().max(stopped);
+      asked[0] = stopped[0];
+    }
   }
-  return report;
+  if (asked[0] > 0.0) {
+    sink_.row(world_, report_.totalSteps, stage.name);
+    sink_.checkpoint(world_, progress(), "");
+    report_.outcome = RunOutcome::Interrupted;
+    return "stopped";
+  }
+  if ((scene_.output.checkpointSteps && report_.totalSteps % static_cast<long>(scene_.output.checkpointSteps) == 0) ||
+      asked[1] > 0.0) {
+    sink_.checkpoint(world_, progress(), "");
+    lastCheckpoint_ = now;
+  }
+  return s == steps ? "duration reached" : "";
+}
+
+void StageRunner::endStage(const std::string& reason, RunObserver& observer) {
+  const StageSpec& stage = scene_.stages[stage_];
+  sink_.row(world_, report_.totalSteps, stage.name);
+  observer.stageEnded(stage, reason, world_);
+  ++stage_;
+  step_ = 0;
+  inStage_ = false;
+  stageStart_ = world_.time();
+  sink_.checkpoint(world_, progress(), stage.name);
+}
+
+const RunReport& StageRunner::run(RunObserver& observer, const volatile std::sig_atomic_t& stop, const RunLimit& limit) {
+  if (finished()) return report_;
+  if (!started_) start();
+  report_.outcome = RunOutcome::Paused;
+  const long until = limit.steps ? report_.stepsThisRun + *limit.steps : std::numeric_limits<long>::max();
+  while (stage_ < scene_.stages.size()) {
+    if (!inStage_) enterStage();
+    std::string reason;
+    while (reason.empty()) {
+      if (report_.stepsThisRun >= until) return report_;
+      reason = stepStage(observer, stop);
+    }
+    if (report_.outcome != RunOutcome::Paused) return report_;  // trouble or a stop
+    const std::size_t ended = stage_;
+    endStage(reason, observer);
+    if (limit.stage && *limit.stage == ended && stage_ < scene_.stages.size()) return report_;
+  }
+  sink_.completed(world_);
+  report_.outcome = RunOutcome::Completed;
+  return report_;
 }
 
 }  // namespace sqdem

@@ -21,16 +21,16 @@ namespace sqdem {
 
 class Team {
  public:
-  Team() : waits_(static_cast<std::size_t>(omp_get_max_threads())) {}
+  explicit Team(int threads) : threads_(threads), waits_(static_cast<std::size_t>(threads)) {}
 
-  /// Runs body() on every thread of a new team (on this thread alone when one thread is asked for).
+  /// Runs body() on every thread of a new team of `threads` (on this thread alone for one).
   template <typename F>
   void run(F&& body) {
-    if (omp_get_max_threads() == 1 && !omp_in_parallel()) {  // (inside another region: a team of its own)
+    if (threads_ == 1 && !omp_in_parallel()) {  // (inside another region: a team of its own)
       body();
       return;
     }
-#pragma omp parallel
+#pragma omp parallel num_threads(threads_)
     body();
   }
   /// A barrier of the whole team (with the memory ordering of one); the calling thread's wait
@@ -110,6 +110,7 @@ class Team {
   struct alignas(64) Line {
     std::atomic<T> value{0};
   };
+  int threads_;
   std::vector<Wait> waits_;
   Line<int> arrived_;
   Line<unsigned> generation_;

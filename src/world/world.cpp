@@ -1,5 +1,7 @@
 #include "sqdem/world/world.hpp"
 
+#include <omp.h>
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -233,7 +235,7 @@ void World::requireModels() const {
 
 template <typename Body>
 void World::inTeam(Body&& body) {
-  Team team;
+  Team team(threads());
   team.run([&] { body(team); });
   team.rethrow();
   timing_.barrierWait += team.meanWait();
@@ -372,6 +374,13 @@ void World::enableEnergyLedger() {
   ledger_.emplace();
   interactions_.fitStore(interactionScene());
 }
+
+void World::setThreads(int threads) {
+  if (threads < 0) throw std::invalid_argument("World::setThreads: a thread count is >= 0 (0: OpenMP's default)");
+  threads_ = threads;
+}
+
+int World::threads() const { return threads_ > 0 ? threads_ : omp_get_max_threads(); }
 
 void World::setSimdPath(SimdPath path) {
   if (!runsHere(path)) {

@@ -34,6 +34,9 @@ struct NamedMaterial {
 /// aspect ratios b/a, c/a (002 Table 2 style), sampled per particle.
 struct ShapeFamily {
   std::string name;
+  /// The semi-axes as given (m): every particle of the family has exactly these (the ranges
+  /// below then hold the values they imply, each a single value).
+  std::optional<Vec3> semiAxes;
   std::array<double, 2> volumeRadius{0.0, 0.0};  ///< [min, max] (m), uniform in radius
   std::array<double, 2> aspectB{1.0, 1.0};       ///< b/a range
   std::array<double, 2> aspectC{1.0, 1.0};       ///< c/a range

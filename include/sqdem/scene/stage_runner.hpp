@@ -1,37 +1,37 @@
 #pragma once
-// Runs a scene's stages on its World (library code: the CLI's `sqdem run` and later bindings).
+// Runs a scene's stages on its World (library code: the CLI's `sqdem run` and the Python module).
 //
 // planRun checks, before anything is written, what a run will do: each stage's step count (at
 // least one, at most 1e12) and an explicit time step against the stable estimate (0.2 x the
 // Rayleigh time of the smallest particle): above it a warning, above 5 x it an error.
 //
-// runStages then runs the stages from a RunProgress (the start, or a checkpoint): per stage it
+// A StageRunner then runs the stages from a RunProgress (the start, or a checkpoint): per stage it
 // sets the walls' motion (each wall back to its declared velocity, then the stage's move_wall
-// velocity or path and servo_wall), the background drag, and
-// steps until the duration or a stop criterion (kinetic-energy ratio, wall pressure, porosity under a plate, checked
-// every 10 steps after `stop.after`); it writes VTK frames, CSV rows (io/run_log.hpp), the
-// checkpoint `<name>_after_<stage>.checkpoint` after each stage and `<name>_latest.checkpoint`
-// every output.checkpoint_every_steps steps / checkpoint_every_minutes minutes and when `stop`
-// becomes non-zero (then it returns Interrupted after the current step). A completed run ends
-// with the particle file of its final state, `<name>_final_particles.csv` (particle_file.hpp), and
-// a scene with a pressing plate with `<name>_compression.csv/.gp/.png` (compression_report.hpp). Numerical trouble
-// (run_health.hpp) ends it with NumericalTrouble after the log row is written. A run resumed
-// mid-stage continues bit for bit.
+// velocity or path and servo_wall), the background drag, and steps until the duration or a stop
+// criterion (kinetic-energy ratio, wall pressure, porosity under a plate, checked every 10 steps
+// after `stop.after`). It writes through its sink (run_sink.hpp; file_sink.hpp for the CLI's
+// files): a frame at the start and output.frames per stage, a log row every output.log_every
+// steps and at each stage's end, a checkpoint after each stage and the latest every
+// output.checkpoint_every_steps steps / checkpoint_every_minutes minutes and when `stop` becomes
+// non-zero (then it returns Interrupted after the current step), the final state when the stages
+// are done. Numerical trouble (run_health.hpp) ends it with NumericalTrouble after the log row
+// is written. A run may be paused (RunLimit: after so many steps, or at a stage's end) and run on
+// with the same bits as without the pause; a run resumed mid-stage continues bit for bit.
 //
-// Across MPI ranks every rank calls runStages alike (the world's communicator): rank 0 writes the
-// log, the plots, the checkpoints and the particle file (gathered in id order), every rank its
-// piece of each VTK frame. The decisions that read a process's own state — a stop signal, the
-// checkpoint clock, the observer's — are agreed over the ranks at every step (one reduction), so
-// every rank takes the same step into the same branch.
+// Across MPI ranks every rank runs alike (the world's communicator): the decisions that read a
+// process's own state — a stop signal, the checkpoint clock, the observer's — are agreed over the
+// ranks at every step (one reduction), so every rank takes the same step into the same branch.
 
+#include <chrono>
 #include <csignal>
-#include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
-#include "sqdem/scene/compression_report.hpp"
 #include "sqdem/scene/run_checkpoint.hpp"
+#include "sqdem/scene/run_sink.hpp"
 #include "sqdem/scene/scene.hpp"
+#include "sqdem/world/run_health.hpp"
 #include "sqdem/world/world.hpp"
 
 namespace sqdem {
@@ -62,33 +62,70 @@ class RunObserver {
  public:
   virtual ~RunObserver() = default;
   /// Whether this process wants an update after the current step (its own clock, say); the
-  /// runner calls update() on every rank when any rank wants one.
+  /// runner calls update() on every rank when any rank wants one. An update may raise the run's
+  /// `stop` flag: the run then ends at this step (Interrupted).
   virtual bool wantsUpdate() { return false; }
   virtual void update(const StageSpec& /*stage*/, long /*step*/, long /*steps*/, long /*stepsThisRun*/,
                       const World& /*world*/) {}
   virtual void stageEnded(const StageSpec& /*stage*/, const std::string& /*reason*/, const World& /*world*/) {}
 };
 
-struct RunOutput {
-  std::filesystem::path directory;
-  std::string name;  ///< prefix of every file of the run
+enum class RunOutcome {
+  Completed,        ///< every stage is done
+  Paused,           ///< the RunLimit was reached: run() goes on from here
+  Interrupted,      ///< `stop` was raised: the latest checkpoint is written
+  NumericalTrouble  ///< RunReport::trouble says what
 };
-
-enum class RunOutcome { Completed, Interrupted, NumericalTrouble };
 
 struct RunReport {
   RunOutcome outcome = RunOutcome::Completed;
-  std::string trouble;                  ///< what went wrong (NumericalTrouble)
-  long totalSteps = 0, stepsThisRun = 0;
-  std::filesystem::path log, latestCheckpoint;
-  std::filesystem::path finalParticles;  ///< the particle file of the final state (Completed)
-  /// With a pressing plate (output.compression), Completed: what the press did (of this run's
-  /// rows: a resumed run's from its checkpoint on) and its plot, when gnuplot made one.
-  std::optional<CompressionSummary> compression;
-  std::optional<std::filesystem::path> compressionPlot;
+  std::string trouble;  ///< what went wrong (NumericalTrouble)
+  long totalSteps = 0;  ///< steps since the run began (the log's step column)
+  long stepsThisRun = 0;  ///< steps taken by this runner
 };
 
-RunReport runStages(const Scene& scene, World& world, const RunPlan& plan, const RunProgress& start,
-                    const RunOutput& output, RunObserver& observer, const volatile std::sig_atomic_t& stop);
+/// Where run() pauses, besides the end of the stages: after `steps` more steps, or at the end of
+/// the stage `stage` (an index into Scene::stages).
+struct RunLimit {
+  std::optional<long> steps;
+  std::optional<std::size_t> stage;
+};
+
+class StageRunner {
+ public:
+  /// The runner keeps references to all four; `start` is where the run stands.
+  StageRunner(const Scene& scene, World& world, const RunPlan& plan, const RunProgress& start, RunSink& sink);
+
+  /// Runs from where it stands up to the limit, the end of the stages, a stop or trouble. The
+  /// first call starts the run: a fresh run computes its first forces (a checkpoint carries its
+  /// own), writes its first frame and log row.
+  const RunReport& run(RunObserver& observer, const volatile std::sig_atomic_t& stop, const RunLimit& limit = {});
+
+  const RunReport& report() const { return report_; }
+  /// Where the run stands (as a checkpoint would record it).
+  RunProgress progress() const { return {stage_, step_, stageStart_, report_.totalSteps}; }
+  /// The stages are done (or trouble ended the run): run() does nothing more.
+  bool finished() const { return stage_ >= scene_.stages.size() || report_.outcome == RunOutcome::NumericalTrouble; }
+
+ private:
+  void start();
+  void enterStage();
+  /// One step of the current stage and what follows it; returns why the stage ends ("" if it goes on).
+  std::string stepStage(RunObserver& observer, const volatile std::sig_atomic_t& stop);
+  void endStage(const std::string& reason, RunObserver& observer);
+
+  const Scene& scene_;
+  World& world_;
+  const RunPlan& plan_;
+  RunSink& sink_;
+  RunProgress start_;
+  std::optional<RunHealth> health_;  ///< from the run's first forces
+  RunReport report_;
+  bool started_ = false, inStage_ = false;
+  std::size_t stage_ = 0;
+  long step_ = 0;           ///< steps of the current stage done
+  double stageStart_ = 0.0;
+  std::chrono::steady_clock::time_point lastCheckpoint_;
+};
 
 }  // namespace sqdem

@@ -121,6 +121,10 @@ class World {
   /// The detector's tolerance and warm starts (interactions.hpp; defaults: 1e-10, on).
   void setDetectorControl(const DetectorControl& control) { detector_ = control; }
   const DetectorControl& detectorControl() const { return detector_; }
+  /// The threads of a step's team (0, the default: OpenMP's, omp_get_max_threads()); results
+  /// are the same bits at any count.
+  void setThreads(int threads);
+  int threads() const;
   /// The code path of the kernels across contacts (simd_path.hpp; default: the widest this CPU
   /// runs). Every path gives the same bits; std::invalid_argument for one this CPU cannot run.
   void setSimdPath(SimdPath path);
@@ -257,6 +261,7 @@ class World {
   double viscousDamping_ = 0.0;
   DetectorControl detector_;
   SimdPath simd_ = widestSimdPath();
+  int threads_ = 0;  ///< setThreads
   std::optional<EnergyLedger> ledger_;
   std::shared_ptr<const Communicator> communicator_ = std::make_shared<SerialCommunicator>();
   int reorderInterval_ = 0;

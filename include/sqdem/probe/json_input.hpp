@@ -10,7 +10,7 @@
 #include "sqdem/geometry/pose.hpp"
 #include "sqdem/geometry/superquadric.hpp"
 
-namespace sqdem::cli {
+namespace sqdem::probe {
 
 using nlohmann::json;
 
@@ -47,4 +47,4 @@ Particle readParticle(const json& p, const std::string& where);
 extern template Eigen::Matrix<double, 3, 1> vector<3>(const json&, const std::string&, const std::string&);
 extern template Eigen::Matrix<double, 4, 1> vector<4>(const json&, const std::string&, const std::string&);
 
-}  // namespace sqdem::cli
+}  // namespace sqdem::probe

@@ -1,4 +1,4 @@
-#include "json_input.hpp"
+#include "sqdem/probe/json_input.hpp"
 
 #include <cmath>
 #include <filesystem>
@@ -6,7 +6,7 @@
 #include <iostream>
 #include <sstream>
 
-namespace sqdem::cli {
+namespace sqdem::probe {
 
 json readJsonInput(const std::string& path) {
   std::stringstream text;
@@ -120,4 +120,4 @@ Particle readParticle(const json& p, const std::string& where) {
   }
 }
 
-}  // namespace sqdem::cli
+}  // namespace sqdem::probe

@@ -1,9 +1,9 @@
-#include "driven_law.hpp"
+#include "sqdem/probe/driven_law.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-namespace sqdem::cli {
+namespace sqdem::probe {
 namespace {
 
 template <class... F>
@@ -18,7 +18,7 @@ class JsonLawInput final : public LawInput {
       : object_(object), where_(std::move(where)), ownKeys_(std::move(ownKeys)) {}
 
   bool has(std::string_view key) const override { return object_.contains(key); }
-  double number(std::string_view key) const override { return cli::number(object_, std::string(key), where_); }
+  double number(std::string_view key) const override { return probe::number(object_, std::string(key), where_); }
   bool flag(std::string_view key) const override {
     const json& v = object_.at(key);
     if (!v.is_boolean()) fail(key, "must be true or false");
@@ -154,4 +154,4 @@ json DrivenLaw::constants() const {
       law_);
 }
 
-}  // namespace sqdem::cli
+}  // namespace sqdem::probe

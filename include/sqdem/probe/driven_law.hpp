@@ -7,10 +7,10 @@
 #include <optional>
 #include <string>
 
-#include "json_input.hpp"
+#include "sqdem/probe/json_input.hpp"
 #include "sqdem/mechanics/law_registry.hpp"
 
-namespace sqdem::cli {
+namespace sqdem::probe {
 
 struct LawSample {
   double force = 0.0;                ///< normal force (N), > 0 repulsive
@@ -56,4 +56,4 @@ class DrivenLaw {
   bool adhesive_ = false;
 };
 
-}  // namespace sqdem::cli
+}  // namespace sqdem::probe
