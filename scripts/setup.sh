@@ -6,7 +6,7 @@ cd "$(dirname "$0")/.."
 
 packages=(g++ make cmake libeigen3-dev libboost-dev libfcl-dev nlohmann-json3-dev
           libgtest-dev libbenchmark-dev gnuplot-nox libyaml-cpp-dev libcgal-dev libvtk9-dev libopenmpi-dev openmpi-bin
-          xvfb xauth)
+          xvfb xauth python3-dev pybind11-dev python3-numpy python3-pytest python3-matplotlib)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
