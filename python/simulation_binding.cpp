@@ -7,10 +7,13 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <signal.h>
+
 #include <algorithm>
 #include <csignal>
 #include <numeric>
 #include <optional>
+#include <stdexcept>
 
 #include "bindings.hpp"
 #include "sqdem/scene/particle_file.hpp"
@@ -45,29 +48,46 @@ class PySimulation final : public RunObserver {
 
   void every(long steps, py::function callback) {
     if (steps < 1) throw py::value_error("every: the interval is a number of steps >= 1");
+    if (running_) throw std::runtime_error("every: not while the simulation runs (register callbacks before run())");
     callbacks_.emplace_back(steps, std::move(callback));
   }
 
   /// Runs with the GIL released; raises what a callback raised, KeyboardInterrupt on Ctrl-C and
   /// NumericalTrouble; returns the outcome's name.
   std::string run(const RunLimit& limit, py::object self) {
-    self_ = self.ptr();
+    if (running_) throw std::runtime_error("run: the simulation is running already (called from its own callback?)");
     stopRequested = 0;
     interrupted = 0;
+    failure_.reset();
     RunOutcome outcome;
     {
+      // Undone however the run ends: the handler restored, the run's state cleared.
+      struct Running {
+        PySimulation& s;
+        struct sigaction previous {};
+        Running(PySimulation& simulation, PyObject* self) : s(simulation) {
+          s.running_ = true;
+          s.self_ = self;
+          struct sigaction handler {};
+          handler.sa_handler = onInterrupt;
+          sigemptyset(&handler.sa_mask);
+          sigaction(SIGINT, &handler, &previous);
+        }
+        ~Running() {
+          sigaction(SIGINT, &previous, nullptr);
+          s.running_ = false;
+          s.self_ = nullptr;
+        }
+      } running(*this, self.ptr());
       py::gil_scoped_release released;
-      const auto previous = std::signal(SIGINT, onInterrupt);
       outcome = simulation_.run(*this, stopRequested, limit).outcome;
-      std::signal(SIGINT, previous);
     }
-    self_ = nullptr;
     if (failure_) {
       py::error_already_set failure = std::move(*failure_);
       failure_.reset();
       throw failure;
     }
-    if (interrupted) {
+    if (interrupted && outcome == RunOutcome::Interrupted) {
       PyErr_SetNone(PyExc_KeyboardInterrupt);
       throw py::error_already_set();
     }
@@ -91,7 +111,8 @@ class PySimulation final : public RunObserver {
   void update(const StageSpec&, long, long, long, const World&) override {
     py::gil_scoped_acquire held;
     const long step = simulation_.runner().report().totalSteps;
-    for (const auto& [every, callback] : callbacks_) {
+    for (std::size_t k = 0; k < callbacks_.size(); ++k) {
+      const auto& [every, callback] = callbacks_[k];
       if (step % every != 0 || failure_) continue;
       try {
         callback(py::handle(self_));
@@ -106,6 +127,7 @@ class PySimulation final : public RunObserver {
   Simulation simulation_;
   std::vector<std::pair<long, py::function>> callbacks_;
   PyObject* self_ = nullptr;  ///< the Python object during a run (the callbacks' argument)
+  bool running_ = false;      ///< run() is under way: no second run, no new callbacks
   std::optional<py::error_already_set> failure_;
 };
 
@@ -271,7 +293,9 @@ void bindSimulation(py::module_& m) {
   py::class_<PySimulation>(m, "Simulation", "A scene set up to run (docs/python.md).")
       .def(py::init([](const Scene& scene, int threads, std::optional<std::string> out, bool overwrite, std::optional<std::string> name,
                        std::optional<std::string> resume, std::optional<std::string> simd) {
-             RunOptions options{.threads = threads, .overwrite = overwrite};
+             RunOptions options;
+             options.threads = threads;
+             options.overwrite = overwrite;
              if (out) options.out = *out;
              if (name) options.name = *name;
              if (resume) options.resume = *resume;
@@ -301,7 +325,9 @@ void bindSimulation(py::module_& m) {
            "'stopped' (sim.stop() from a callback); raises KeyboardInterrupt on Ctrl-C and NumericalTrouble.")
       .def("step", [](py::object self, long n) {
              if (n < 0) throw py::value_error("step: a count >= 0");
-             return self.cast<PySimulation&>().run(RunLimit{.steps = n}, self);
+             RunLimit limit;
+             limit.steps = n;
+             return self.cast<PySimulation&>().run(limit, self);
            },
            py::arg("n") = 1, "Runs n steps (across stages).")
       .def("every", &PySimulation::every, py::arg("steps"), py::arg("callback"),
@@ -317,6 +343,8 @@ void bindSimulation(py::module_& m) {
         if (k >= s.simulation().scene().stages.size()) return std::nullopt;
         return s.simulation().scene().stages[k].name;
       }, "The stage under way or next (None when every stage is done).")
+      .def_property_readonly("stage_steps", [](PySimulation& s) { return s.simulation().plan().stageSteps; },
+                             "Each stage's steps at the time step (its duration's; a stop criterion may end it sooner).")
       .def_property_readonly("finished", [](PySimulation& s) { return s.simulation().runner().finished(); })
       .def_property_readonly("time_step", [](PySimulation& s) { return s.world().timeStep(); }, "(s)")
       .def_property_readonly("threads", [](PySimulation& s) { return s.world().threads(); })

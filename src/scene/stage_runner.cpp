@@ -202,11 +202,18 @@ const RunReport& StageRunner::run(RunObserver& observer, const volatile std::sig
   if (finished()) return report_;
   if (!started_) start();
   report_.outcome = RunOutcome::Paused;
-  const long until = limit.steps ? report_.stepsThisRun + *limit.steps : std::numeric_limits<long>::max();
+  const long most = std::numeric_limits<long>::max();
+  const long until = limit.steps && *limit.steps < most - report_.stepsThisRun ? report_.stepsThisRun + *limit.steps : most;
   while (stage_ < scene_.stages.size()) {
     if (!inStage_) enterStage();
     std::string reason;
     while (reason.empty()) {
+      // A stage whose steps are all done (a run stopped, or a checkpoint written, at its last
+      // step) ends without another step.
+      if (step_ >= plan_.stageSteps[stage_]) {
+        reason = "duration reached";
+        break;
+      }
       if (report_.stepsThisRun >= until) return report_;
       reason = stepStage(observer, stop);
     }

@@ -45,6 +45,14 @@ def test_a_scene_run_from_python_gives_the_clis_particle_file(tmp_path):
     assert quiet.run() == "completed" and quiet.finished
     quiet.write_particles(str(tmp_path / "quiet.csv"))
     assert (tmp_path / "quiet.csv").read_bytes() == cli
+    # Stopped at the last step of a stage, then run on: the stage ends without another step.
+    stopped = sqdem.Simulation(sqdem.Scene.load(str(SMALL_BED)), threads=2)
+    last = stopped.stage_steps[0]
+    stopped.every(1, lambda s: s.stop() if s.step_count == last else None)
+    assert stopped.run() == "stopped" and stopped.step_count == last and stopped.stage == "pour"
+    assert stopped.run() == "completed"
+    stopped.write_particles(str(tmp_path / "stopped.csv"))
+    assert (tmp_path / "stopped.csv").read_bytes() == cli
 
 
 def test_views_share_the_stores_memory_and_see_the_next_step():

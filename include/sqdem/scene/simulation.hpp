@@ -40,6 +40,9 @@ class Simulation {
   /// name that cannot name files, or an output directory it cannot prepare.
   Simulation(Scene scene, const RunOptions& options,
              std::shared_ptr<const Communicator> ranks = std::make_shared<SerialCommunicator>());
+  /// Its runner and sink refer to its scene, world and plan: it stays where it was made.
+  Simulation(const Simulation&) = delete;
+  Simulation& operator=(const Simulation&) = delete;
 
   /// Runs on from where it stands (StageRunner::run).
   const RunReport& run(RunObserver& observer, const volatile std::sig_atomic_t& stop, const RunLimit& limit = {}) {
