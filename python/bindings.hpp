@@ -7,7 +7,7 @@ namespace sqdem::python {
 
 /// sqdem.Scene (load, from_dict, from_text) and sqdem.SceneError.
 void bindScene(pybind11::module_& m);
-/// sqdem.Simulation: runs, callbacks, views of particles and contacts, measures.
+/// sqdem.Simulation: runs, callbacks, measures (and the views' classes, bindStoreViews).
 void bindSimulation(pybind11::module_& m);
 /// sqdem.contact (the single-contact driver) and sqdem.geometry (the detector on one pair).
 void bindProbes(pybind11::module_& m);

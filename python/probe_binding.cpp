@@ -1,35 +1,38 @@
 // sqdem.contact (the single-contact driver, probe/contact_drive.hpp) and sqdem.geometry (the
-// detector on one posed pair): their inputs are the documents `sqdem contact` and `sqdem
-// geometry` read, given as dictionaries (through their JSON text: the library checks them).
+// contact geometry probe, probe/pair_geometry.hpp): their inputs are the documents `sqdem
+// contact` and `sqdem geometry` read, given as Python values (json_value.hpp): the library
+// checks them.
 
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
-#include <cmath>
 #include <limits>
+#include <string>
 
 #include "bindings.hpp"
-#include "sqdem/contact/detector.hpp"
+#include "json_value.hpp"
 #include "sqdem/probe/contact_drive.hpp"
+#include "sqdem/probe/pair_geometry.hpp"
 
 namespace py = pybind11;
 
 namespace sqdem::python {
 namespace {
 
-probe::json toJson(const py::handle& value) {
-  return probe::json::parse(py::module_::import("json").attr("dumps")(value).cast<std::string>());
-}
-
 py::object fromJson(const probe::json& value) { return py::module_::import("json").attr("loads")(value.dump()); }
 
 py::array_t<double> array(const std::vector<double>& values) { return py::array_t<double>(static_cast<py::ssize_t>(values.size()), values.data()); }
 
-py::array_t<double> vec3(const Vec3& v) { return py::array_t<double>(3, v.data()); }
-
-/// A superquadric from its semi-axes and exponents.
-Superquadric shapeOf(const std::array<double, 3>& semiAxes, const std::array<double, 2>& exponents) {
-  return Superquadric(semiAxes[0], semiAxes[1], semiAxes[2], exponents[0], exponents[1]);
+/// A particle of the geometry probe's document from a shape and a pose.
+probe::json particle(const py::handle& semiAxes, const py::handle& exponents, const py::handle& centre,
+                     const py::handle& quaternion, const std::string& where) {
+  const probe::json axes = toJson(semiAxes, where + ".semi_axes"), n = toJson(exponents, where + ".exponents"),
+                    q = toJson(quaternion, where + ".quaternion");
+  if (!axes.is_array() || axes.size() != 3) throw py::value_error(where + ": semi_axes are three numbers (a, b, c)");
+  if (!n.is_array() || n.size() != 2) throw py::value_error(where + ": exponents are two numbers (n1, n2)");
+  if (!q.is_array() || q.size() != 4) throw py::value_error(where + ": a quaternion is four numbers (x, y, z, w)");
+  return {{"a", axes[0]}, {"b", axes[1]}, {"c", axes[2]}, {"n1", n[0]}, {"n2", n[1]},
+          {"centre", toJson(centre, where + ".centre")}, {"quaternion", {q[3], q[0], q[1], q[2]}}};
 }
 
 }  // namespace
@@ -40,7 +43,7 @@ void bindProbes(py::module_& m) {
   m.def(
       "contact",
       [](const py::dict& description) {
-        const probe::ContactDrive drive = probe::driveContact(toJson(description), "contact");
+        const probe::ContactDrive drive = probe::driveContact(toJson(description, "description"), "contact");
         py::list curves;
         for (const probe::DrivenCurve& c : drive.curves) {
           py::dict curve;
@@ -71,35 +74,23 @@ void bindProbes(py::module_& m) {
 
   m.def(
       "geometry",
-      [](std::array<double, 3> semiAxesA, std::array<double, 2> exponentsA, std::array<double, 3> centreA,
-         std::array<double, 4> quaternionA, std::array<double, 3> semiAxesB, std::array<double, 2> exponentsB,
-         std::array<double, 3> centreB, std::array<double, 4> quaternionB, double cutoff) {
-        const Superquadric A = shapeOf(semiAxesA, exponentsA), B = shapeOf(semiAxesB, exponentsB);
-        const auto pose = [](const std::array<double, 3>& c, const std::array<double, 4>& q) {
-          return Pose{Vec3(c[0], c[1], c[2]), Quat(q[3], q[0], q[1], q[2]).normalized()};
-        };
-        DetectorSettings settings;
-        settings.cutoff = cutoff;
-        const ContactGeometry g = detectContact(A, pose(centreA, quaternionA), B, pose(centreB, quaternionB), settings);
-        py::dict out;
-        out["status"] = std::string(describe(g.status));
-        out["converged"] = g.converged();
-        out["overlap"] = g.overlap;
-        out["normal"] = vec3(g.normal);
-        out["point_a"] = vec3(g.pointA);
-        out["point_b"] = vec3(g.pointB);
-        out["curvatures_a"] = py::make_tuple(g.curvatureA.k1, g.curvatureA.k2);
-        out["curvatures_b"] = py::make_tuple(g.curvatureB.k1, g.curvatureB.k2);
-        out["directions_a"] = py::make_tuple(vec3(g.curvatureA.d1), vec3(g.curvatureA.d2));
-        out["directions_b"] = py::make_tuple(vec3(g.curvatureB.d1), vec3(g.curvatureB.d2));
-        out["iterations"] = g.iterations;
-        return out;
+      [](const py::handle& semiAxesA, const py::handle& exponentsA, const py::handle& centreA, const py::handle& quaternionA,
+         const py::handle& semiAxesB, const py::handle& exponentsB, const py::handle& centreB, const py::handle& quaternionB,
+         const py::handle& cutoff, const py::handle& effectiveModulus) {
+        probe::json input{{"particles", {particle(semiAxesA, exponentsA, centreA, quaternionA, "particles[0]"),
+                                         particle(semiAxesB, exponentsB, centreB, quaternionB, "particles[1]")}},
+                          {"cutoff", toJson(cutoff, "cutoff")}};
+        if (!effectiveModulus.is_none()) input["E_star"] = toJson(effectiveModulus, "E_star");
+        return fromJson(probe::pairGeometry(input));
       },
       py::arg("semi_axes_a"), py::arg("exponents_a"), py::arg("centre_a"), py::arg("quaternion_a"), py::arg("semi_axes_b"),
       py::arg("exponents_b"), py::arg("centre_b"), py::arg("quaternion_b"), py::arg("cutoff") = 0.0,
-      "The common-normal detector on one pair: shapes by semi-axes (m) and exponents (n1, n2), poses by centre (m) "
-      "and quaternion (x, y, z, w); returns status, overlap (m), normal, both contact points, both surfaces' "
-      "principal curvatures (1/m) and directions. cutoff (m): report gaps up to it.");
+      py::arg("effective_modulus") = py::none(),
+      "The contact geometry probe of `sqdem geometry` on one pair: shapes by semi-axes (m) and exponents (n1, n2), "
+      "poses by centre (m) and quaternion (x, y, z, w); cutoff (m): report gaps up to it; effective_modulus E* (Pa): "
+      "adds the elliptic Hertz force. Returns its JSON object as a dict (README.md, `sqdem geometry`): status, "
+      "converged, overlap; where it converged the normal, both points, both surfaces' principal curvatures (1/m) and "
+      "directions, the relative radii and Hertz factors.");
 }
 
 }  // namespace sqdem::python

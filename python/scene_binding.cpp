@@ -1,9 +1,10 @@
-// sqdem.Scene: a validated scene, from a file or from a dictionary (through its JSON text: the
-// library's reader checks it with the file's messages, no line numbers).
+// sqdem.Scene: a validated scene, from a file, from text or from a dictionary (as its JSON text,
+// json_value.hpp: the library's reader checks it with the file's messages, no line numbers).
 
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
+#include "json_value.hpp"
 #include "sqdem/scene/scene_loader.hpp"
 
 namespace py = pybind11;
@@ -25,8 +26,7 @@ void bindScene(py::module_& m) {
       .def_static(
           "from_dict",
           [](const py::dict& document, const std::string& name, const std::string& directory) {
-            const std::string text = py::module_::import("json").attr("dumps")(document).cast<std::string>();
-            return sceneFromText(text, SceneOrigin{name, directory});
+            return sceneFromText(toJson(document, name).dump(), SceneOrigin{name, directory});
           },
           py::arg("document"), py::arg("name") = "scene", py::arg("directory") = ".",
           "Validates a scene given as a dictionary with the scene file's keys (the same checks and messages).")

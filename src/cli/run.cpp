@@ -106,15 +106,6 @@ void printSummary(const World& world, const RunReport& report, double wall, cons
   std::printf("run plot: %s\n", plot ? plot->string().c_str() : "none (gnuplot not found)");
 }
 
-/// Under a launcher (mpirun, srun) the processes are the ranks of one run; started alone, a
-/// process runs by itself (MPI not initialised).
-std::shared_ptr<const Communicator> launchedRanks() {
-  for (const char* variable : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK"}) {
-    if (std::getenv(variable) != nullptr) return worldCommunicator();
-  }
-  return std::make_shared<SerialCommunicator>();
-}
-
 int runScene(const std::shared_ptr<const Communicator>& communicator, const std::string& scenePath, fs::path outDir,
              int threads, std::optional<SimdPath> simd, const std::string& resume, bool overwrite, double progressEvery) {
   const Communicator& ranks = *communicator;
@@ -212,18 +203,17 @@ int runCommand(const Arguments& args) {
       const std::string v = args[++i];
       char* end = nullptr;
       const long n = std::strtol(v.c_str(), &end, 10);
-      if (v.empty() || *end != '\0' || n < 1 || n > 1024) {
-        std::fprintf(stderr, "sqdem run: --threads = '%s': expected an integer in [1, 1024]\n", v.c_str());
+      if (v.empty() || *end != '\0' || n < 1 || n > mostThreads) {
+        std::fprintf(stderr, "sqdem run: --threads = '%s': expected an integer in [1, %d]\n", v.c_str(), mostThreads);
         return 2;
       }
       threads = static_cast<int>(n);
     } else if (a == "--simd") {
       const std::string v = args[++i];
-      simd = simdPathNamed(v);
-      if (!simd || !runsHere(*simd)) {
-        std::string names;
-        for (const SimdPath path : availableSimdPaths()) names += (names.empty() ? "" : ", ") + std::string(simdPathName(path));
-        std::fprintf(stderr, "sqdem run: --simd = '%s': expected one this CPU runs: %s\n", v.c_str(), names.c_str());
+      try {
+        simd = runnableSimdPath(v);
+      } catch (const std::invalid_argument& e) {
+        std::fprintf(stderr, "sqdem run: --simd = %s\n", e.what());
         return 2;
       }
     } else if (a == "--progress-every") {

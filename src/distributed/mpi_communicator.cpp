@@ -178,4 +178,11 @@ std::shared_ptr<Communicator> worldCommunicator() {
   return world;
 }
 
+std::shared_ptr<const Communicator> launchedRanks() {
+  for (const char* variable : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK"}) {
+    if (std::getenv(variable) != nullptr) return worldCommunicator();
+  }
+  return std::make_shared<SerialCommunicator>();
+}
+
 }  // namespace sqdem

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <array>
+#include <stdexcept>
+#include <string>
 
 namespace sqdem {
 namespace {
@@ -28,11 +30,14 @@ SimdPath widestSimdPath() { return availableSimdPaths().back(); }
 
 std::string_view simdPathName(SimdPath path) { return names[static_cast<std::size_t>(path)]; }
 
-std::optional<SimdPath> simdPathNamed(std::string_view name) {
+SimdPath runnableSimdPath(std::string_view name) {
   for (std::size_t k = 0; k < names.size(); ++k) {
-    if (names[k] == name) return static_cast<SimdPath>(k);
+    if (names[k] == name && runsHere(static_cast<SimdPath>(k))) return static_cast<SimdPath>(k);
   }
-  return std::nullopt;
+  std::string message(1, '\'');
+  message.append(name).append("': expected a SIMD path this CPU runs:");
+  for (const SimdPath path : availableSimdPaths()) message.append(path == SimdPath::Scalar ? " " : ", ").append(simdPathName(path));
+  throw std::invalid_argument(message);
 }
 
 }  // namespace sqdem

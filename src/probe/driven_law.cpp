@@ -67,7 +67,11 @@ DrivenLaw::DrivenLaw(const json& law, const std::string& where, const RelativeRa
                                                       : EccentricityMethod::Tabulated;
   if (!law.contains("type") || !law["type"].is_string()) input.fail("type", "must name a law");
   const NormalLawEntry& entry = normalLaw(law["type"].get<std::string>(), input, "type");
-  if (!entry.curvatures) input.fail("type", "volume_sphere_hertz needs particles; on given radii it is elliptic_hertz");
+  if (!entry.curvatures) {
+    input.fail("type", "volume_sphere_hertz is Hertz on the volume-equivalent spheres, which the driver does not "
+                       "take: it drives a law on the pair's relative radii (given, or the particles' curvatures); for "
+                       "the volume spheres use elliptic_hertz with radii [R*, R*], R* = rA rB / (rA + rB)");
+  }
   const PairElasticity pair{.effectiveModulus = materials.effectiveModulus(), .poissonRatio = materials.meanPoisson()};
   law_ = readNormalLaw(entry, input, pair);
   adhesive_ = sqdem::adhesive(law_);

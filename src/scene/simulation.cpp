@@ -1,5 +1,6 @@
 #include "sqdem/scene/simulation.hpp"
 
+#include <algorithm>
 #include <functional>
 
 #include "sqdem/io/plain_name.hpp"
@@ -24,6 +25,12 @@ void agreedSetUp(const Communicator& ranks, const std::function<void()>& part) {
   throw SceneError(ranks.exchangeAll(std::move(outbox))[static_cast<std::size_t>(lowest)]);
 }
 
+std::string defaultRunName(const std::string& scenePath) {
+  const std::filesystem::path path(scenePath);
+  const std::string extension = path.extension().string();
+  return extension == ".yaml" || extension == ".yml" || extension == ".json" ? path.stem().string() : path.filename().string();
+}
+
 Simulation::Simulation(Scene scene, const RunOptions& options, std::shared_ptr<const Communicator> ranks)
     : scene_(std::move(scene)), world_(buildWorld(scene_)) {
   world_.setCommunicator(ranks);
@@ -35,7 +42,7 @@ Simulation::Simulation(Scene scene, const RunOptions& options, std::shared_ptr<c
   }
   world_.setThreads(options.threads);
   if (options.simd) world_.setSimdPath(*options.simd);
-  std::string name = options.name.empty() ? std::filesystem::path(scene_.path).stem().string() : options.name;
+  std::string name = options.name.empty() ? defaultRunName(scene_.path) : options.name;
   // The name goes into every file's name and into the plot scripts.
   if (!isPlainName(name, 100)) {
     throw SceneError((options.name.empty() ? scene_.path + ": the scene file's name (less .yaml)" : "the run's name '" + name + "'") +
@@ -49,6 +56,13 @@ Simulation::Simulation(Scene scene, const RunOptions& options, std::shared_ptr<c
     files_ = std::make_unique<FileSink>(scene_, world_, RunOutput{*options.out, name}, plan_.surfaceResolution);
   }
   runner_ = std::make_unique<StageRunner>(scene_, world_, plan_, start_, files_ ? static_cast<RunSink&>(*files_) : noFiles_);
+}
+
+void Simulation::editParticles(const std::function<void(ParticleStore&)>& change) {
+  const double before = world_.kineticEnergy();
+  change(world_.particles());
+  world_.particlesEdited();
+  runner_->addEnergy(std::max(0.0, world_.kineticEnergy() - before));
 }
 
 }  // namespace sqdem

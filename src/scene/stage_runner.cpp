@@ -6,6 +6,8 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <stdexcept>
+#include <utility>
 
 #include "sqdem/scene/build_world.hpp"
 #include "sqdem/world/packing_measures.hpp"
@@ -136,25 +138,25 @@ std::string StageRunner::stepStage(RunObserver& observer, const volatile std::si
   }
   if (s % logEvery == 0) sink_.row(world_, report_.totalSteps, stage.name);
   if (frameEvery && s % frameEvery == 0) sink_.frame(world_);
+  // A stop criterion ends the stage at this step; the observer is still updated at it.
+  std::string ending;
   if (s % 10 == 0 && world_.time() - stageStart_ >= stage.minimumDuration) {
-    std::string reason;
     if (stage.kineticEnergyRatio > 0.0 && s % 100 == 0 &&
         kineticEnergyRatio(world_, scene_.gravity, stage.velocityScale) < stage.kineticEnergyRatio) {
-      reason = "kinetic energy ratio below " + std::to_string(stage.kineticEnergyRatio);
+      ending = "kinetic energy ratio below " + std::to_string(stage.kineticEnergyRatio);
     } else {
       const double p = stage.wallPressure > 0.0 ? world_.wallPressure(stage.pressureWall) : 0.0;
       const double phi = stage.porosity > 0.0 ? measurePlate(world_, stage.pressureWall).porosity : 1.0;
       if (stage.wallPressure > 0.0 && p >= stage.wallPressure) {
-        reason = measuredStop("pressure reached", p, stage.wallPressure, stage.pressureWall, " Pa");
+        ending = measuredStop("pressure reached", p, stage.wallPressure, stage.pressureWall, " Pa");
       } else if (phi <= stage.porosity) {
-        reason = measuredStop("pressed the bed to porosity", phi, stage.porosity, stage.pressureWall, "");
+        ending = measuredStop("pressed the bed to porosity", phi, stage.porosity, stage.pressureWall, "");
       }
     }
-    if (!reason.empty()) {
-      if (!frameEvery || s % frameEvery != 0) sink_.frame(world_);
-      return reason;
-    }
+    if (!ending.empty() && (!frameEvery || s % frameEvery != 0)) sink_.frame(world_);
   }
+  const bool criterion = !ending.empty();
+  if (!criterion && s == steps) ending = "duration reached";
   // What each process's own state asks for, agreed over the ranks: stop, a checkpoint by the
   // clock, an update of the observer.
   const auto now = Clock::now();
@@ -174,17 +176,22 @@ std::string StageRunner::stepStage(RunObserver& observer, const volatile std::si
     }
   }
   if (asked[0] > 0.0) {
+    if (!ending.empty()) {  // the stage ends at this step all the same; the run stops after it ended
+      stopAfterStage_ = true;
+      return ending;
+    }
     sink_.row(world_, report_.totalSteps, stage.name);
     sink_.checkpoint(world_, progress(), "");
     report_.outcome = RunOutcome::Interrupted;
     return "stopped";
   }
+  if (criterion) return ending;
   if ((scene_.output.checkpointSteps && report_.totalSteps % static_cast<long>(scene_.output.checkpointSteps) == 0) ||
       asked[1] > 0.0) {
     sink_.checkpoint(world_, progress(), "");
     lastCheckpoint_ = now;
   }
-  return s == steps ? "duration reached" : "";
+  return ending;
 }
 
 void StageRunner::endStage(const std::string& reason, RunObserver& observer) {
@@ -199,6 +206,11 @@ void StageRunner::endStage(const std::string& reason, RunObserver& observer) {
 }
 
 const RunReport& StageRunner::run(RunObserver& observer, const volatile std::sig_atomic_t& stop, const RunLimit& limit) {
+  if (limit.stage && *limit.stage < stage_) {
+    throw std::invalid_argument("stage '" + scene_.stages[*limit.stage].name + "' has ended already (the run " +
+                                (stage_ < scene_.stages.size() ? "is in stage '" + scene_.stages[stage_].name + "'"
+                                                               : std::string("has done every stage")) + ")");
+  }
   if (finished()) return report_;
   if (!started_) start();
   report_.outcome = RunOutcome::Paused;
@@ -220,6 +232,11 @@ const RunReport& StageRunner::run(RunObserver& observer, const volatile std::sig
     if (report_.outcome != RunOutcome::Paused) return report_;  // trouble or a stop
     const std::size_t ended = stage_;
     endStage(reason, observer);
+    if (std::exchange(stopAfterStage_, false) && stage_ < scene_.stages.size()) {
+      sink_.checkpoint(world_, progress(), "");
+      report_.outcome = RunOutcome::Interrupted;
+      return report_;
+    }
     if (limit.stage && *limit.stage == ended && stage_ < scene_.stages.size()) return report_;
   }
   sink_.completed(world_);

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace sqdem {
 
@@ -47,8 +49,13 @@ double solidVolume(const World& world) {
 
 PlateMeasures measurePlate(const World& world, std::size_t plate) {
   const Wall* floor = floorWall(world);
+  if (plate >= world.walls().size() || world.walls()[plate].shape != WallShape::Plane ||
+      !(world.walls()[plate].plane.normal.z() < -0.999) || floor == nullptr) {
+    throw std::invalid_argument("walls[" + std::to_string(plate) + "] is not a plate: a plate is a plane wall facing -z "
+                                "(normal [0, 0, -1]) in a scene with a floor, a plane wall facing +z");
+  }
   PlateMeasures m;
-  m.gap = world.walls().at(plate).plane.point.z() - (floor ? floor->plane.point.z() : world.domain().lo.z());
+  m.gap = world.walls()[plate].plane.point.z() - floor->plane.point.z();
   m.pressure = world.wallPressure(plate);
   m.porosity = 1.0 - solidVolume(world) / (world.wallArea(plate) * m.gap);
   return m;

@@ -376,7 +376,10 @@ void World::enableEnergyLedger() {
 }
 
 void World::setThreads(int threads) {
-  if (threads < 0) throw std::invalid_argument("World::setThreads: a thread count is >= 0 (0: OpenMP's default)");
+  if (threads < 0 || threads > mostThreads) {
+    throw std::invalid_argument("threads: " + std::to_string(threads) + " is not a count in [0, " + std::to_string(mostThreads) +
+                                "] (0: OpenMP's default)");
+  }
   threads_ = threads;
 }
 

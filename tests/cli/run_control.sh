@@ -120,5 +120,5 @@ check "the run names its kernels' path" grep -Eq "thread\(s\), (baseline|avx2) k
 check "a bed of spheres in contact" grep -Eq "^final: solid fraction 0\.[3-6].*mean coordination [3-6]\." "$scratch/widest.log"
 check "every path, the same particles" cmp "$scratch/scalar/spheres_final_particles.csv" "$scratch/widest/spheres_final_particles.csv"
 check "every path, the same log" cmp "$scratch/scalar/spheres.csv" "$scratch/widest/spheres.csv"
-expect_error "--simd avx512" 2 "--simd = 'avx512': expected one this CPU runs: scalar, baseline" "$sqdem" run "$scene" --simd avx512
+expect_error "--simd avx512" 2 "--simd = 'avx512': expected a SIMD path this CPU runs: scalar, baseline" "$sqdem" run "$scene" --simd avx512
 finish

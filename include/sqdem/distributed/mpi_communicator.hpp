@@ -16,4 +16,9 @@ namespace sqdem {
 /// process is a world of one rank.
 std::shared_ptr<Communicator> worldCommunicator();
 
+/// The ranks of a launched run: under a launcher (mpirun or srun: OMPI_COMM_WORLD_SIZE,
+/// PMIX_RANK or PMI_RANK set) the launched processes (worldCommunicator); started alone, one
+/// process by itself, MPI not initialised (the CLI's `sqdem run` and the Python module).
+std::shared_ptr<const Communicator> launchedRanks();
+
 }  // namespace sqdem

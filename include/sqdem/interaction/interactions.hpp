@@ -9,6 +9,7 @@
 // theirs exactly (ExactSum), so results depend neither on the thread count, nor on the slots
 // (re-ordering), nor, across ranks, on the decomposition.
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <ranges>
@@ -125,6 +126,13 @@ struct LoadOnB {
   std::uint8_t acting = 0;     ///< whether it carried force (else it is not added)
 };
 
+/// The contact ellipse of a contact (Interactions::ellipses).
+struct ContactEllipse {
+  double major = 0.0;             ///< semi-axis (m); 0 for a pair not in contact
+  double minor = 0.0;             ///< semi-axis (m), <= major
+  Vec3 majorAxis = Vec3::Zero();  ///< unit, in the tangent plane (world frame); zero for a circle
+};
+
 /// An empty store with the optional arrays the scene's contact models need.
 ContactStore emptyStore(const InteractionScene& scene);
 
@@ -141,6 +149,9 @@ class Interactions {
   /// Keeps the store's optional arrays (rolling, curvature cache) to what the scene's contact
   /// models need, after a model changed: arrays added fresh, arrays no longer needed dropped.
   void fitStore(const InteractionScene& scene);
+  /// Drops every pair's separation bound (ContactStore::separation): after the particles were
+  /// moved other than by a step, the next computation solves each pair again.
+  void forgetSeparations() { std::fill(store_.separation.begin(), store_.separation.end(), 0.0); }
   // compute and reduce are a step's team work (docs/architecture.md, "A step"): called by every
   // thread of an OpenMP team, each takes its share of the particles (thread_share.hpp) and of the
   // contacts, those whose A is one of them; they end without a barrier: the caller's ends them.
@@ -182,6 +193,13 @@ class Interactions {
     return listActing() | std::views::transform([this](std::uint32_t k) { return ContactView(store_, k); });
   }
   const ContactStore& store() const { return store_; }
+  /// Every stored contact's ellipse, by store slot (contact_ellipse.cpp): its area is its law's
+  /// (NormalLoad::area), its aspect b/a = sqrt(1 - e^2) the Hertz ellipse's of the pair's
+  /// relative radii at the current poses (004 Eq. 13, as the law's model computes them; exact for
+  /// elliptic Hertz, Hertz's shape of the spot for the laws whose area differs: JKR, rough,
+  /// plastic), its major axis that of the smaller relative curvature; a circle for the laws on
+  /// volume-equivalent spheres and for round pairs. Computed when asked, not kept by the steps.
+  std::vector<ContactEllipse> ellipses(const InteractionScene& scene) const;
   std::size_t actingCount() const { return listActing().size(); }
   /// This process's share of the contacts' ContactEnergy of the last computation, exact sums
   /// of its fields in their order (stored, normal, damping, tangential); zero without a store

@@ -27,7 +27,8 @@ bool runsHere(SimdPath path);
 SimdPath widestSimdPath();
 /// "scalar", "baseline", "avx2".
 std::string_view simdPathName(SimdPath path);
-/// The path of that name, if any.
-std::optional<SimdPath> simdPathNamed(std::string_view name);
+/// The path of that name when this CPU runs it; std::invalid_argument naming the paths it runs
+/// otherwise (the CLI's --simd and the Python module's simd=).
+SimdPath runnableSimdPath(std::string_view name);
 
 }  // namespace sqdem

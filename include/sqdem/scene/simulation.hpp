@@ -23,13 +23,17 @@ namespace sqdem {
 /// failed on any rank, every rank throws the lowest failing rank's SceneError.
 void agreedSetUp(const Communicator& ranks, const std::function<void()>& part);
 
+/// The run's default name (its files' prefix): the scene file's name less a .yaml, .yml or .json
+/// extension; a scene from text, its name as given.
+std::string defaultRunName(const std::string& scenePath);
+
 /// How a scene runs.
 struct RunOptions {
   int threads = 0;                ///< a step's threads (0: OpenMP's default, OMP_NUM_THREADS or every core)
   std::optional<SimdPath> simd;   ///< the kernels' code path (default: the widest this CPU runs)
   /// The output directory; none: no files at all (no frames, log, checkpoints or particle file).
   std::optional<std::filesystem::path> out;
-  std::string name;               ///< the files' prefix (default: the scene's name, Scene::path's stem)
+  std::string name;               ///< the files' prefix (default: defaultRunName of Scene::path)
   bool overwrite = false;         ///< replace sqdem's files of that name in `out`
   std::optional<std::filesystem::path> resume;  ///< a checkpoint to continue from (its files: <name>_from_step<N>_*)
 };
@@ -48,6 +52,13 @@ class Simulation {
   const RunReport& run(RunObserver& observer, const volatile std::sig_atomic_t& stop, const RunLimit& limit = {}) {
     return runner_->run(observer, stop, limit);
   }
+
+  /// Sets particle state between steps (the Python module's setters): `change` edits the owned
+  /// particles; the world then drops what assumed they moved by their velocities alone
+  /// (World::particlesEdited), and the kinetic energy the edit added joins the run's energy
+  /// budget (StageRunner::addEnergy), so that speed given to a particle is not taken for an
+  /// instability. Collective across ranks.
+  void editParticles(const std::function<void(ParticleStore&)>& change);
 
   const Scene& scene() const { return scene_; }
   World& world() { return world_; }

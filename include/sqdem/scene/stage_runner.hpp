@@ -13,8 +13,8 @@
 // files): a frame at the start and output.frames per stage, a log row every output.log_every
 // steps and at each stage's end, a checkpoint after each stage and the latest every
 // output.checkpoint_every_steps steps / checkpoint_every_minutes minutes and when `stop` becomes
-// non-zero (then it returns Interrupted after the current step), the final state when the stages
-// are done. Numerical trouble (run_health.hpp) ends it with NumericalTrouble after the log row
+// non-zero (then it returns Interrupted after the current step, or, at a step that ends its
+// stage, after the stage's end is written), the final state when the stages are done. Numerical trouble (run_health.hpp) ends it with NumericalTrouble after the log row
 // is written. A run may be paused (RunLimit: after so many steps, or at a stage's end) and run on
 // with the same bits as without the pause; a run resumed mid-stage continues bit for bit.
 //
@@ -99,7 +99,13 @@ class StageRunner {
   /// Runs from where it stands up to the limit, the end of the stages, a stop or trouble. The
   /// first call starts the run: a fresh run computes its first forces (a checkpoint carries its
   /// own), writes its first frame and log row.
+  /// std::invalid_argument for a limit at a stage that has ended.
   const RunReport& run(RunObserver& observer, const volatile std::sig_atomic_t& stop, const RunLimit& limit = {});
+  /// Energy given to the particles from outside the steps (J): joins the energy budget of the
+  /// health checks (run_health.hpp).
+  void addEnergy(double joules) {
+    if (health_) health_->addEnergy(joules);
+  }
 
   const RunReport& report() const { return report_; }
   /// Where the run stands (as a checkpoint would record it).
@@ -122,6 +128,7 @@ class StageRunner {
   std::optional<RunHealth> health_;  ///< from the run's first forces
   RunReport report_;
   bool started_ = false, inStage_ = false;
+  bool stopAfterStage_ = false;  ///< `stop` was raised at a step that ends its stage
   std::size_t stage_ = 0;
   long step_ = 0;           ///< steps of the current stage done
   double stageStart_ = 0.0;

@@ -48,6 +48,8 @@ struct PlateMeasures {
   double pressure = 0.0;  ///< World::wallPressure (Pa)
   double porosity = 0.0;  ///< 1 - V_solid / (A gap), A the plate's cross-section of the box
 };
+/// std::invalid_argument when wall `plate` is not a plate of a scene with a floor (the scene
+/// reader's rule for stages that press).
 PlateMeasures measurePlate(const World& world, std::size_t plate);
 /// The floor: the first plane wall facing +z, if any.
 const Wall* floorWall(const World& world);

@@ -9,7 +9,8 @@
 //    |F . v| dt of the moving walls, and a floor of 1 m/s per particle so that a scene starting
 //    at rest without gravity has room for adhesion and small disturbances. A stable explicit
 //    integration conserves or dissipates energy; an unstable one grows it geometrically, far
-//    past this bound within a few dozen steps;
+//    past this bound within a few dozen steps. Energy given to the particles from outside the
+//    step loop (state set between steps: scene/simulation.hpp) joins the budget (addEnergy);
 //  - growing deep overlaps: contacts deeper than half a volume radius in 10 consecutive checks.
 
 #include <cstdint>
@@ -30,6 +31,8 @@ class RunHealth {
   std::string afterStep(const World& world);
 
   double budget() const { return budget_ + wallWork_; }  ///< (J)
+  /// Energy given to the particles from outside the steps (J, >= 0).
+  void addEnergy(double joules) { budget_ += joules; }
 
  private:
   double budget_ = 0.0, wallWork_ = 0.0;

@@ -58,6 +58,9 @@ struct StepTiming {
   double barrierWait = 0.0;
 };
 
+/// The most threads a World's team is given.
+inline constexpr int mostThreads = 1024;
+
 class World {
  public:
   /// skin (m): Verlet skin of the neighbour list; search: how candidate pairs are found.
@@ -121,8 +124,8 @@ class World {
   /// The detector's tolerance and warm starts (interactions.hpp; defaults: 1e-10, on).
   void setDetectorControl(const DetectorControl& control) { detector_ = control; }
   const DetectorControl& detectorControl() const { return detector_; }
-  /// The threads of a step's team (0, the default: OpenMP's, omp_get_max_threads()); results
-  /// are the same bits at any count.
+  /// The threads of a step's team (0, the default: OpenMP's, omp_get_max_threads(); at most
+  /// mostThreads, std::invalid_argument otherwise); results are the same bits at any count.
   void setThreads(int threads);
   int threads() const;
   /// The code path of the kernels across contacts (simd_path.hpp; default: the widest this CPU
@@ -135,6 +138,11 @@ class World {
 
   /// Advances one step (computes the initial forces first if needed).
   void step();
+  /// Call after setting particle state between steps (positions, velocities, rotations): the
+  /// pairs' separation bounds, which assume the particles moved by their velocities alone, are
+  /// dropped, so every pair is solved again at the next step. The neighbour list needs nothing:
+  /// its rebuild test measures every displacement since its build, an edit's too.
+  void particlesEdited() { interactions_.forgetSeparations(); }
   /// Computes contacts and forces at the current state (no integration).
   void computeForces();
 
@@ -150,6 +158,8 @@ class World {
   /// range), in key order.
   auto contacts() const { return interactions_.acting(); }
   const Interactions& interactions() const { return interactions_; }
+  /// Every stored contact's ellipse at the current state, by store slot (Interactions::ellipses).
+  std::vector<ContactEllipse> contactEllipses() const { return interactions_.ellipses(interactionScene()); }
   /// The loads of the last force computation that other ranks' contacts put on this rank's
   /// particles, one per Interactions::remoteContacts() entry (empty in one process).
   const std::vector<LoadOnB>& remoteLoads() const { return remoteLoadsNow_; }

@@ -1,0 +1,39 @@
+#include "json_value.hpp"
+
+namespace py = pybind11;
+
+namespace sqdem::python {
+
+probe::json toJson(const py::handle& value, const std::string& where) {
+  if (value.is_none()) return nullptr;
+  if (py::isinstance<py::bool_>(value)) return value.cast<bool>();
+  if (py::isinstance<py::int_>(value)) {
+    try {
+      return value.cast<long long>();
+    } catch (const py::cast_error&) {
+      return value.cast<double>();  // beyond 64 bits
+    }
+  }
+  if (py::isinstance<py::float_>(value)) return value.cast<double>();
+  if (py::isinstance<py::str>(value)) return value.cast<std::string>();
+  if (py::isinstance<py::dict>(value)) {
+    probe::json object = probe::json::object();
+    for (const auto& [key, item] : value.cast<py::dict>()) {
+      if (!py::isinstance<py::str>(key)) throw py::type_error(where + ": keys are strings, not " + std::string(py::str(key.get_type())));
+      const std::string name = key.cast<std::string>();
+      object[name] = toJson(item, where + "." + name);
+    }
+    return object;
+  }
+  if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
+    probe::json array = probe::json::array();
+    std::size_t k = 0;
+    for (const auto& item : value) array.push_back(toJson(item, where + "[" + std::to_string(k++) + "]"));
+    return array;
+  }
+  if (py::hasattr(value, "tolist") && py::hasattr(value, "dtype")) return toJson(value.attr("tolist")(), where);
+  throw py::type_error(where + ": a value of type " + std::string(py::str(value.get_type())) + " cannot be given");
+}
+
+
+}  // namespace sqdem::python
