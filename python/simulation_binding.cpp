@@ -52,18 +52,23 @@ class PySimulation final : public RunObserver {
   PySimulation(const Scene& scene, const RunOptions& options) : simulation_(scene, options, launchedRanks()) {}
 
   Simulation& simulation() { return simulation_; }
-  World& world() { return simulation_.world(); }
+  const RunState& state() const { return state_; }
+  /// The world, when its state may be read or set (RunState::requireIdle).
+  World& world(const char* what) {
+    state_.requireIdle(what);
+    return simulation_.world();
+  }
 
   void every(long steps, py::function callback) {
     if (steps < 1) throw py::value_error("every: the interval is a number of steps >= 1");
-    if (running_) throw std::runtime_error("every: not while the simulation runs (register callbacks before run())");
+    if (state_.running) throw std::runtime_error("every: not while the simulation runs (register callbacks before run())");
     callbacks_.emplace_back(steps, std::move(callback));
   }
 
   /// Runs with the GIL released; raises what a callback raised, KeyboardInterrupt on Ctrl-C and
   /// NumericalTrouble; returns the outcome's name.
   std::string run(const RunLimit& limit, py::object self) {
-    if (running_) throw std::runtime_error("run: the simulation is running already (called from its own callback?)");
+    if (state_.running) throw std::runtime_error("run: the simulation is running already (called from its own callback?)");
     flags_.stop = 0;
     flags_.interrupted = 0;
     failure_.reset();
@@ -75,7 +80,7 @@ class PySimulation final : public RunObserver {
         StopFlags* outer;
         struct sigaction previous {};
         Running(PySimulation& simulation, PyObject* self) : s(simulation), outer(running.exchange(&simulation.flags_)) {
-          s.running_ = true;
+          s.state_.running = true;
           s.self_ = self;
           struct sigaction handler {};
           handler.sa_handler = onInterrupt;
@@ -85,7 +90,7 @@ class PySimulation final : public RunObserver {
         ~Running() {
           sigaction(SIGINT, &previous, nullptr);
           running.store(outer);
-          s.running_ = false;
+          s.state_.running = false;
           s.self_ = nullptr;
         }
       } guard(*this, self.ptr());
@@ -120,6 +125,11 @@ class PySimulation final : public RunObserver {
   }
   void update(const StageSpec&, long, long, long, const World&) override {
     py::gil_scoped_acquire held;
+    struct Waiting {  // the engine waits for the callbacks: they may read and set its state
+      RunState& state;
+      explicit Waiting(RunState& s) : state(s) { state.inCallback = true; }
+      ~Waiting() { state.inCallback = false; }
+    } waiting(state_);
     const long step = simulation_.runner().report().totalSteps;
     for (std::size_t k = 0; k < callbacks_.size(); ++k) {
       const auto& [every, callback] = callbacks_[k];
@@ -137,7 +147,7 @@ class PySimulation final : public RunObserver {
   Simulation simulation_;
   std::vector<std::pair<long, py::function>> callbacks_;
   PyObject* self_ = nullptr;  ///< the Python object during a run (the callbacks' argument)
-  bool running_ = false;      ///< run() is under way: no second run, no new callbacks
+  RunState state_;            ///< running: no second run, no new callbacks, no access from other threads
   StopFlags flags_;
   std::optional<py::error_already_set> failure_;
 };
@@ -198,9 +208,15 @@ void bindSimulation(py::module_& m) {
       .def("every", &PySimulation::every, py::arg("steps"), py::arg("callback"),
            "Calls callback(sim) after every `steps`-th step of the run (the run's step count).")
       .def("stop", &PySimulation::stop, "From a callback: ends the run after this step.")
-      .def_property_readonly("particles", [](py::object self) { return ParticleViews{self, self.cast<PySimulation&>().simulation()}; })
-      .def_property_readonly("contacts", [](py::object self) { return ContactViews{self, self.cast<PySimulation&>().world()}; })
-      .def_property_readonly("time", [](PySimulation& s) { return s.world().time(); }, "Simulated time (s).")
+      .def_property_readonly("particles", [](py::object self) {
+        PySimulation& s = self.cast<PySimulation&>();
+        return ParticleViews{self, s.simulation(), s.state()};
+      })
+      .def_property_readonly("contacts", [](py::object self) {
+        PySimulation& s = self.cast<PySimulation&>();
+        return ContactViews{self, s.simulation().world(), s.state()};
+      })
+      .def_property_readonly("time", [](PySimulation& s) { return s.world("time").time(); }, "Simulated time (s).")
       .def_property_readonly("step_count", [](PySimulation& s) { return s.simulation().runner().report().totalSteps; },
                              "Steps since the run began (the log's step column).")
       .def_property_readonly("stage", [](PySimulation& s) -> std::optional<std::string> {
@@ -211,10 +227,14 @@ void bindSimulation(py::module_& m) {
       .def_property_readonly("stage_steps", [](PySimulation& s) { return s.simulation().plan().stageSteps; },
                              "Each stage's steps at the time step (its duration's; a stop criterion may end it sooner).")
       .def_property_readonly("finished", [](PySimulation& s) { return s.simulation().runner().finished(); })
-      .def_property_readonly("time_step", [](PySimulation& s) { return s.world().timeStep(); }, "(s)")
-      .def_property_readonly("threads", [](PySimulation& s) { return s.world().threads(); })
+      .def_property_readonly("time_step", [](PySimulation& s) { return s.simulation().world().timeStep(); }, "(s)")
+      .def_property_readonly("threads", [](PySimulation& s) { return s.simulation().world().threads(); })
+      .def_property_readonly("rank", [](PySimulation& s) { return s.simulation().world().communicator().rank(); },
+                             "This process's rank (0 in one process; docs/python.md, 'Under MPI').")
+      .def_property_readonly("ranks", [](PySimulation& s) { return s.simulation().world().communicator().size(); },
+                             "The processes of the run (1 without mpirun).")
       .def("measures", [](PySimulation& s) {
-             const World& w = s.world();
+             const World& w = s.world("measures");
              const PackingMeasures m = measurePacking(w);
              py::dict out;
              out["time"] = w.time();
@@ -231,7 +251,7 @@ void bindSimulation(py::module_& m) {
            "The packing's measures (docs/python.md: solid fraction, coordination, stress (Pa, compression "
            "positive), kinetic energy (J), ...).")
       .def("plate", [](PySimulation& s, std::size_t wall) {
-             const PlateMeasures m = measurePlate(s.world(), wall);
+             const PlateMeasures m = measurePlate(s.world("plate"), wall);
              py::dict out;
              out["gap"] = m.gap;
              out["pressure"] = m.pressure;
@@ -242,7 +262,7 @@ void bindSimulation(py::module_& m) {
            "A plate (a plane wall facing -z) pressing the bed onto the floor (a plane wall facing +z): its gap to the "
            "floor (m), its pressure (Pa) and the porosity between them.")
       .def("write_particles", [](PySimulation& s, const std::string& path) {
-             writeParticleFile(path, s.world(), s.simulation().scene().materials);
+             writeParticleFile(path, s.world("write_particles"), s.simulation().scene().materials);
            },
            py::arg("path"), "Writes the particle file of the current state (the CLI's *_final_particles.csv).");
 }

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <string>
 
 #include "bindings.hpp"
 #include "sqdem/scene/particle_edits.hpp"
@@ -70,16 +71,23 @@ py::dict sortedById(const World& world) {
   return out;
 }
 
-/// A setter of the library (particle_edits.hpp) taking an array.
-template <void (*Set)(Simulation&, std::span<const double>)>
+/// A setter of the library (particle_edits.hpp) taking an (N, K) array.
+template <void (*Set)(Simulation&, std::span<const double>), int K>
 void set(ParticleViews& v, const Rows& rows) {
+  v.state.requireIdle("set");
+  if (rows.ndim() != 2 || rows.shape(1) != K) {
+    throw py::value_error("expected an array of shape (N, " + std::to_string(K) + "), one row per particle");
+  }
   Set(v.simulation, values(rows));
 }
 
 }  // namespace
 
 void bindStoreViews(py::module_& m) {
-  const auto particles = [](ParticleViews& v) -> ParticleStore& { return v.simulation.world().particles(); };
+  const auto particles = [](ParticleViews& v) -> ParticleStore& {
+    v.state.requireIdle("particles");
+    return v.simulation.world().particles();
+  };
   py::class_<ParticleViews>(m, "Particles",
                             "Read-only zero-copy views of this process's particles in storage order, valid until the "
                             "next step (docs/python.md); state is set with set_position, set_velocity, "
@@ -119,17 +127,23 @@ void bindStoreViews(py::module_& m) {
         return out;
       }, "(N, 2) superquadric exponents n1, n2, a copy.")
       .def("__len__", [=](ParticleViews& v) { return particles(v).size(); })
-      .def("sorted_by_id", [](ParticleViews& v) { return sortedById(v.simulation.world()); },
+      .def("sorted_by_id", [=](ParticleViews& v) {
+        particles(v);  // the state check
+        return sortedById(v.simulation.world());
+      },
            "Every field as a copy, in id order (a dict of arrays).")
-      .def("set_position", &set<setPositions>, py::arg("positions"),
+      .def("set_position", &set<setPositions, 3>, py::arg("positions"),
            "Sets every centre from (N, 3) values (m), in storage order.")
-      .def("set_velocity", &set<setVelocities>, py::arg("velocities"), "Sets every velocity from (N, 3) values (m/s).")
-      .def("set_orientation", &set<setOrientations>, py::arg("quaternions"),
+      .def("set_velocity", &set<setVelocities, 3>, py::arg("velocities"), "Sets every velocity from (N, 3) values (m/s).")
+      .def("set_orientation", &set<setOrientations, 4>, py::arg("quaternions"),
            "Sets every orientation from (N, 4) quaternions (x, y, z, w), normalised; keeps the angular velocities.")
-      .def("set_angular_velocity", &set<setAngularVelocities>, py::arg("angular_velocities"),
+      .def("set_angular_velocity", &set<setAngularVelocities, 3>, py::arg("angular_velocities"),
            "Sets every angular velocity from (N, 3) values (rad/s, world frame), and the momentum with it.");
 
-  const auto store = [](ContactViews& v) -> const ContactStore& { return v.world.interactions().store(); };
+  const auto store = [](ContactViews& v) -> const ContactStore& {
+    v.state.requireIdle("contacts");
+    return v.world.interactions().store();
+  };
   py::class_<ContactViews>(m, "Contacts",
                            "Read-only zero-copy views of the contact store, one row per candidate pair of the "
                            "neighbour list (valid until the next step); `acting` marks the pairs in contact.")
@@ -149,7 +163,8 @@ void bindStoreViews(py::module_& m) {
         for (std::size_t k = 0; k < loads.size(); ++k) out.mutable_at(k) = loads[k].area;
         return out;
       }, "(M,) contact areas (m^2), a copy.")
-      .def("ellipses", [](ContactViews& v) {
+      .def("ellipses", [=](ContactViews& v) {
+        store(v);  // the state check
         const std::vector<ContactEllipse> ellipses = v.world.contactEllipses();
         py::array_t<double> semiAxes = table(ellipses.size(), 2), axis = table(ellipses.size(), 3);
         for (std::size_t k = 0; k < ellipses.size(); ++k) {

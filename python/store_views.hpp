@@ -3,20 +3,24 @@
 
 #include <pybind11/pybind11.h>
 
+#include "run_state.hpp"
 #include "sqdem/scene/simulation.hpp"
 
 namespace sqdem::python {
 
-/// This process's particles in storage order; `owner` (the Python Simulation) keeps the memory.
+/// This process's particles in storage order; `owner` (the Python Simulation) keeps the memory
+/// and the run's state.
 struct ParticleViews {
   pybind11::object owner;
   Simulation& simulation;
+  const RunState& state;
 };
 
 /// The contact store, one row per candidate pair of the neighbour list.
 struct ContactViews {
   pybind11::object owner;
-  World& world;
+  const World& world;
+  const RunState& state;
 };
 
 void bindStoreViews(pybind11::module_& m);

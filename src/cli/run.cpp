@@ -21,6 +21,7 @@
 
 #include "commands.hpp"
 #include "progress_printer.hpp"
+#include "sqdem/distributed/agreed.hpp"
 #include "sqdem/distributed/mpi_communicator.hpp"
 #include "sqdem/io/run_plot.hpp"
 #include "sqdem/scene/scene_loader.hpp"
@@ -111,11 +112,11 @@ int runScene(const std::shared_ptr<const Communicator>& communicator, const std:
   const Communicator& ranks = *communicator;
   const bool speaks = ranks.rank() == 0;  // rank 0 prints and writes the run's files
   Scene scene;
-  agreedSetUp(ranks, [&] { scene = loadScene(scenePath); });  // everything is validated before anything runs
+  agreed<SceneError>(ranks, [&] { scene = loadScene(scenePath); });  // everything is validated before anything runs
   RunOptions options;
   options.threads = threads;
   options.simd = simd;
-  options.out = outDir.empty() ? fs::path("out") / fs::path(scenePath).stem() : outDir;
+  options.out = outDir.empty() ? fs::path("out") / defaultRunName(scenePath) : outDir;
   options.overwrite = overwrite;
   if (!resume.empty()) options.resume = resume;
   Simulation simulation(std::move(scene), options, communicator);
@@ -245,7 +246,7 @@ int runCommand(const Arguments& args) {
   if (ranks->rank() != 0 && !std::freopen("/dev/null", "w", stdout)) return 1;  // rank 0 prints for the run
   try {
     return runScene(ranks, scene, outDir, threads, simd, resume, overwrite, progressEvery);
-  } catch (const SceneError& e) {  // found alike on every rank (agreedSetUp), before the run
+  } catch (const SceneError& e) {  // found alike on every rank (distributed/agreed.hpp), before the run
     if (ranks->rank() == 0) std::fprintf(stderr, "sqdem run: %s\n", e.what());
     return 1;
   } catch (const std::exception& e) {  // while running (output that cannot be written): maybe on this rank alone

@@ -1,5 +1,6 @@
 // Interactions::ellipses: the contact ellipse of every stored contact, from its area and the
-// Hertz aspect of its relative radii (interactions.hpp).
+// Hertz aspect of its relative radii (interactions.hpp). A contact whose roller the detector no
+// longer finds at the current poses is left zero.
 
 #include <cmath>
 #include <numbers>
@@ -32,10 +33,17 @@ std::vector<ContactEllipse> Interactions::ellipses(const InteractionScene& scene
       g.normal = store_.normal[k];
       ContactKinematics motion;
       motion.volumeRadiusA = A.volumeEquivalentRadius();
-      if (withWall(group.kind)) {
+      if (group.kind == PairKind::ParticleCylinder) {
+        // The roller's curvatures depend on which part of it touches (its barrel, a rounded end,
+        // a flat end or its rim): its detector gives them, warm from the stored answer.
+        Cylinder image = scene.walls[b & ~wallFlag].cylinder;
+        image.point += store_.wallImage[k];
+        const WarmStart warm{store_.localA[k], store_.localB[k], store_.overlap[k]};
+        g = detectContact(A, poseA, image, {.cutoff = scene.skin, .tolerance = scene.detector.tolerance, .curvatures = true}, &warm);
+        if (!g.converged()) continue;
+      } else if (withWall(group.kind)) {  // a plane, or a mesh's face, edge or vertex: flat
         addCurvatures(g, A, poseA);
-        const Wall& wall = scene.walls[b & ~wallFlag];
-        g.curvatureB = wall.shape == WallShape::Cylinder ? wall.cylinder.curvatures(-g.normal) : PrincipalCurvatures::flat(-g.normal);
+        g.curvatureB = PrincipalCurvatures::flat(-g.normal);
       } else {
         const Superquadric& B = scene.shapes[p.shape[b]];
         addCurvatures(g, A, poseA, B, Pose{p.position[b], p.orientation[b]});

@@ -3,27 +3,12 @@
 #include <algorithm>
 #include <functional>
 
+#include "sqdem/distributed/agreed.hpp"
 #include "sqdem/io/plain_name.hpp"
 #include "sqdem/scene/build_world.hpp"
 #include "sqdem/scene/output_directory.hpp"
 
 namespace sqdem {
-
-void agreedSetUp(const Communicator& ranks, const std::function<void()>& part) {
-  if (ranks.size() == 1) return part();
-  std::string error;
-  try {
-    part();
-  } catch (const SceneError& e) {
-    error = e.what();
-  }
-  // The lowest failing rank tells the others its message.
-  const double lowest = ranks.min(error.empty() ? static_cast<double>(ranks.size()) : static_cast<double>(ranks.rank()));
-  if (lowest == ranks.size()) return;
-  std::vector<std::string> outbox(static_cast<std::size_t>(ranks.size()));
-  if (lowest == ranks.rank()) outbox.assign(outbox.size(), error);
-  throw SceneError(ranks.exchangeAll(std::move(outbox))[static_cast<std::size_t>(lowest)]);
-}
 
 std::string defaultRunName(const std::string& scenePath) {
   const std::filesystem::path path(scenePath);
@@ -37,7 +22,7 @@ Simulation::Simulation(Scene scene, const RunOptions& options, std::shared_ptr<c
   plan_ = planRun(scene_, world_);
   const double dt = world_.timeStep();
   if (options.resume) {
-    agreedSetUp(*ranks, [&] { start_ = readRunCheckpoint(*options.resume, scene_, world_); });
+    agreed<SceneError>(*ranks, [&] { start_ = readRunCheckpoint(*options.resume, scene_, world_); });
     if (world_.timeStep() != dt) throw SceneError(options.resume->string() + ": the checkpoint's time step differs from the scene's");
   }
   world_.setThreads(options.threads);
@@ -45,12 +30,12 @@ Simulation::Simulation(Scene scene, const RunOptions& options, std::shared_ptr<c
   std::string name = options.name.empty() ? defaultRunName(scene_.path) : options.name;
   // The name goes into every file's name and into the plot scripts.
   if (!isPlainName(name, 100)) {
-    throw SceneError((options.name.empty() ? scene_.path + ": the scene file's name (less .yaml)" : "the run's name '" + name + "'") +
+    throw SceneError((options.name.empty() ? scene_.path + ": the scene's name (its file's name less .yaml, .yml or .json)" : "the run's name '" + name + "'") +
                      " names the output files: it must be 1-100 letters, digits, '_', '.', '-', not starting with '.' or '-'");
   }
   if (options.resume) name += "_from_step" + std::to_string(start_.totalSteps);
   if (options.out) {
-    agreedSetUp(*ranks, [&] {
+    agreed<SceneError>(*ranks, [&] {
       if (ranks->rank() == 0) prepareOutputDirectory(*options.out, name, !options.resume, options.overwrite);
     });
     files_ = std::make_unique<FileSink>(scene_, world_, RunOutput{*options.out, name}, plan_.surfaceResolution);
@@ -61,8 +46,7 @@ Simulation::Simulation(Scene scene, const RunOptions& options, std::shared_ptr<c
 void Simulation::editParticles(const std::function<void(ParticleStore&)>& change) {
   const double before = world_.kineticEnergy();
   change(world_.particles());
-  world_.particlesEdited();
-  runner_->addEnergy(std::max(0.0, world_.kineticEnergy() - before));
+  runner_->stateEdited(std::max(0.0, world_.particlesEdited(before)));
 }
 
 }  // namespace sqdem

@@ -375,6 +375,13 @@ void World::enableEnergyLedger() {
   interactions_.fitStore(interactionScene());
 }
 
+double World::particlesEdited(double kineticBefore) {
+  interactions_.forgetSeparations();
+  const double given = kineticEnergy() - kineticBefore;
+  if (ledger_) ledger_->edits += given;
+  return given;
+}
+
 void World::setThreads(int threads) {
   if (threads < 0 || threads > mostThreads) {
     throw std::invalid_argument("threads: " + std::to_string(threads) + " is not a count in [0, " + std::to_string(mostThreads) +

@@ -27,7 +27,7 @@ expect_output "no surfaces above 20,000 particles by default" "20001 particles: 
 check "... and none written" test ! -e "$scratch/many/many_surfaces.pvd"
 check "a small bed's surfaces are written" test -s "$a/small_bed_surfaces.pvd"
 cp "$scene" "$scratch/bad name.yaml"
-expect_error "a scene file name that cannot name files" 1 "the scene file's name .* must be 1-100 letters" "$sqdem" run "$scratch/bad name.yaml" --out "$scratch/bad"
+expect_error "a scene file name that cannot name files" 1 "the scene's name .* names the output files: it must be 1-100 letters" "$sqdem" run "$scratch/bad name.yaml" --out "$scratch/bad"
 check "nothing written for it" test ! -e "$scratch/bad"
 
 # The final state as a particle file, and a scene that starts from it (a packed bed).

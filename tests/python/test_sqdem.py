@@ -56,6 +56,16 @@ def test_a_scene_run_from_python_gives_the_clis_particle_file(tmp_path, cli_part
     assert quiet.run() == "completed" and quiet.finished
     quiet.write_particles(str(tmp_path / "quiet.csv"))
     assert (tmp_path / "quiet.csv").read_bytes() == cli_particles
+    # Stopped at the last step of a stage: the stage ends there, the run stops after it with a
+    # checkpoint, and a simulation resumed from it ends alike.
+    stopped = sqdem.Simulation(sqdem.Scene.load(str(SMALL_BED)), threads=2, out=str(tmp_path / "stopped"))
+    last = stopped.stage_steps[0]
+    stopped.every(1, lambda s: s.stop() if s.step_count == last else None)
+    assert stopped.run() == "stopped" and stopped.step_count == last and stopped.stage == "press"
+    resumed = sqdem.Simulation(sqdem.Scene.load(str(SMALL_BED)), threads=2, out=str(tmp_path / "stopped"),
+                               resume=str(tmp_path / "stopped" / "small_bed_latest.checkpoint"))
+    assert resumed.step_count == last and resumed.stage == "press" and resumed.run() == "completed"
+    assert (tmp_path / "stopped" / f"small_bed_from_step{last}_final_particles.csv").read_bytes() == cli_particles
 
 
 def test_views_share_the_stores_memory_and_see_the_next_step():
@@ -118,8 +128,27 @@ def test_speed_given_from_python_is_not_taken_for_an_instability():
     # 50 m/s given to a 1 mm glass sphere at rest without gravity: 500 x the health checks' start
     # budget (E_kin(0) + m (1 m/s)^2 / 2); the energy given joins the budget.
     sim = sqdem.Simulation(sqdem.Scene.from_dict(FREE, name="free"))
+    sim.step(1)  # the run has started: its health checks hold their budget
     sim.particles.set_velocity(np.array([[50.0, 0.0, 0.0]]))
     assert sim.step(30) == "paused"
+
+
+def test_an_overlap_made_by_moving_a_particle_is_not_taken_for_an_instability():
+    # Two stiff glass spheres (E = 70 GPa, 1 mm) at rest without gravity; one moved into a 0.05 mm
+    # overlap stores ~1e-2 J, ~100 x the health checks' start budget; the next steps turn it into
+    # kinetic energy as the spheres push apart.
+    stiff = copy.deepcopy(FREE)
+    stiff["time_step"] = 2.0e-7
+    stiff["materials"]["glass"]["youngs_modulus"] = 7.0e10
+    stiff["particles"] = [{"shape": "ball", "material": "glass", "centre": [3.0e-3, 5.0e-3, 5.0e-3]},
+                          {"shape": "ball", "material": "glass", "centre": [5.2e-3, 5.0e-3, 5.0e-3]}]
+    sim = sqdem.Simulation(sqdem.Scene.from_dict(stiff, name="stiff"))
+    sim.step(1)
+    position = sim.particles.position.copy()
+    position[sim.particles.id == 1, 0] -= 2.5e-4
+    sim.particles.set_position(position)
+    assert sim.step(200) == "paused"
+    assert sim.measures()["kinetic_energy"] > 1e-3
 
 
 def test_a_particle_moved_onto_another_is_solved_at_the_next_step():
@@ -224,6 +253,36 @@ def test_bad_arguments_raise_clear_errors():
     assert bed.plate(1)["gap"] == pytest.approx(12.0e-3)
 
 
+def test_contact_ellipses_on_walls():
+    # A sphere (r = 1 mm) on the barrel of a roller (R = 1 mm, axis y): relative curvatures 1/r
+    # along the axis and 1/r + 1/R around it, so the ellipse's major axis lies along the axis. A
+    # sphere on the roller's flat end: a circle. An ellipsoid (1.2, 1.0, 0.8) mm standing on the
+    # floor: curvatures c/a^2 along x and c/b^2 along y at its lowest point, the major axis along x.
+    scene = copy.deepcopy(FREE)
+    scene["shapes"]["egg"] = {"semi_axes": [1.2e-3, 1.0e-3, 0.8e-3]}
+    scene["walls"] = [{"point": [0, 0, 0], "normal": [0, 0, 1], "material": "glass"},
+                      {"point": [5.0e-3, 5.0e-3, 5.0e-3], "axis": [0, 1, 0], "radius": 1.0e-3, "length": 4.0e-3,
+                       "ends": "flat", "material": "glass"}]
+    scene["particles"] = [{"shape": "ball", "material": "glass", "centre": [5.0e-3, 5.0e-3, 6.98e-3], "allow_overlap": True},
+                          {"shape": "ball", "material": "glass", "centre": [5.0e-3, 7.98e-3, 5.0e-3], "allow_overlap": True},
+                          {"shape": "egg", "material": "glass", "centre": [2.0e-3, 2.0e-3, 0.78e-3], "allow_overlap": True}]
+    sim = sqdem.Simulation(sqdem.Scene.from_dict(scene))
+    sim.step(1)
+    c = sim.contacts
+    semi_axes, axis = c.ellipses()
+    acting = c.acting.astype(bool)
+    assert acting.sum() == 3
+    on = {}
+    for k in np.flatnonzero(acting):
+        on[(int(c.id_a[k]), int(c.id_b[k]) & ~sqdem.wall_flag)] = k
+    barrel, end, floor = on[(0, 1)], on[(1, 1)], on[(2, 0)]
+    for k in (barrel, end, floor):
+        assert np.pi * semi_axes[k, 0] * semi_axes[k, 1] == pytest.approx(c.area[k], rel=1e-12)
+    assert semi_axes[barrel, 0] > 1.2 * semi_axes[barrel, 1] and abs(axis[barrel, 1]) == pytest.approx(1.0, abs=1e-9)
+    assert semi_axes[end, 0] == pytest.approx(semi_axes[end, 1], rel=1e-9)
+    assert semi_axes[floor, 0] > semi_axes[floor, 1] and abs(axis[floor, 0]) == pytest.approx(1.0, abs=1e-9)
+
+
 def test_contact_ellipses():
     # Two equal ellipsoids (a, b, c) = (1.2, 1.0, 0.8) mm tip to tip along x: at the tips both
     # surfaces' principal curvatures are a/b^2 (along y) and a/c^2 (along z), so the contact
@@ -247,7 +306,6 @@ def test_contact_ellipses():
     g = sqdem.geometry([1.2e-3, 1.0e-3, 0.8e-3], [2, 2], p["position"][0], p["orientation"][0],
                        [1.2e-3, 1.0e-3, 0.8e-3], [2, 2], p["position"][1], p["orientation"][1])
     assert (b / a) ** 2 == pytest.approx(1.0 - g["e2_exact"], rel=1e-6)
-    assert np.all(semi_axes[~acting] == 0.0)
 
 
 def test_the_probes_take_numpy_values_and_name_bad_ones():
@@ -327,10 +385,17 @@ def test_the_detector_on_one_pair():
 
 def test_mpirun_runs_a_python_script_as_the_ranks_of_one_run(tmp_path, cli_particles):
     script = tmp_path / "run.py"
-    script.write_text("import sys\nimport sqdem\n"
+    # Then a setter given a NaN on rank 1 only is refused on both ranks (none waits for the other).
+    script.write_text("import sys\nimport numpy as np\nimport sqdem\n"
                       "sim = sqdem.Simulation(sqdem.Scene.load(sys.argv[1]), threads=1, out=sys.argv[2])\n"
-                      "assert sim.run() == 'completed'\n")
+                      "assert sim.ranks == 2 and sim.run() == 'completed'\n"
+                      "v = sim.particles.velocity.copy()\n"
+                      "if sim.rank == 1:\n    v[0, 0] = np.nan\n"
+                      "try:\n    sim.particles.set_velocity(v)\nexcept ValueError as e:\n"
+                      "    open(sys.argv[2] + f'/refused_{sim.rank}', 'w').write(str(e))\n")
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
     subprocess.run(["mpirun", "-np", "2", "--oversubscribe", sys.executable, str(script), str(SMALL_BED),
-                    str(tmp_path / "ranks")], check=True, env=env, stdout=subprocess.DEVNULL)
+                    str(tmp_path / "ranks")], check=True, env=env, stdout=subprocess.DEVNULL, timeout=600)
+    for rank in (0, 1):
+        assert (tmp_path / "ranks" / f"refused_{rank}").read_text() == "velocity: row 0 is not finite"
     assert (tmp_path / "ranks" / "small_bed_final_particles.csv").read_bytes() == cli_particles

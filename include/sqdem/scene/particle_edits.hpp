@@ -1,9 +1,9 @@
 #pragma once
 // Particle state set between steps (the Python module's setters, docs/python.md): every field of
 // this process's particles at once, from n rows of k values (row-major, in storage order). The
-// values are checked before any is set (std::invalid_argument naming the row and the field);
-// the change then goes through Simulation::editParticles (separation bounds dropped, the energy
-// given joining the health checks' budget). Collective across ranks.
+// values are checked before any is set: std::invalid_argument naming the row and the field, on
+// every rank when any rank's values fail (distributed/agreed.hpp); the change then goes through
+// Simulation::editParticles. Collective across ranks.
 
 #include <span>
 
@@ -11,7 +11,7 @@
 
 namespace sqdem {
 
-/// Centres (m), n x 3: finite.
+/// Centres (m), n x 3: finite, within the domain along its axes that are not periodic.
 void setPositions(Simulation& simulation, std::span<const double> rows);
 /// Velocities (m/s), n x 3: finite.
 void setVelocities(Simulation& simulation, std::span<const double> rows);

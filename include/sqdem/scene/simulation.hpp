@@ -3,7 +3,7 @@
 // built, the run planned (planRun), a checkpoint restored, the output directory prepared, the
 // sink and the stage runner made. Under MPI every rank constructs it alike; a failure of the
 // set-up on some ranks (a file one cannot read, the output directory rank 0 prepares) throws the
-// same SceneError on every rank (the lowest failing rank's message).
+// same SceneError on every rank (the lowest failing rank's message: distributed/agreed.hpp).
 
 #include <csignal>
 #include <filesystem>
@@ -18,10 +18,6 @@
 #include "sqdem/scene/stage_runner.hpp"
 
 namespace sqdem {
-
-/// Runs a part of a run's set-up that may fail on some ranks only (reading files): when it
-/// failed on any rank, every rank throws the lowest failing rank's SceneError.
-void agreedSetUp(const Communicator& ranks, const std::function<void()>& part);
 
 /// The run's default name (its files' prefix): the scene file's name less a .yaml, .yml or .json
 /// extension; a scene from text, its name as given.
@@ -54,9 +50,10 @@ class Simulation {
   }
 
   /// Sets particle state between steps (the Python module's setters): `change` edits the owned
-  /// particles; the world then drops what assumed they moved by their velocities alone
-  /// (World::particlesEdited), and the kinetic energy the edit added joins the run's energy
-  /// budget (StageRunner::addEnergy), so that speed given to a particle is not taken for an
+  /// particles; the world then drops what assumed they moved by their velocities alone and
+  /// books the kinetic energy given in its energy ledger (World::particlesEdited), and the run's
+  /// health checks take the energy given into their budget (StageRunner::stateEdited), so that
+  /// speed given to a particle, or an overlap made by moving it, is not taken for an
   /// instability. Collective across ranks.
   void editParticles(const std::function<void(ParticleStore&)>& change);
 

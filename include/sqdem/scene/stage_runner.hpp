@@ -101,10 +101,11 @@ class StageRunner {
   /// own), writes its first frame and log row.
   /// std::invalid_argument for a limit at a stage that has ended.
   const RunReport& run(RunObserver& observer, const volatile std::sig_atomic_t& stop, const RunLimit& limit = {});
-  /// Energy given to the particles from outside the steps (J): joins the energy budget of the
-  /// health checks (run_health.hpp).
-  void addEnergy(double joules) {
-    if (health_) health_->addEnergy(joules);
+  /// Particle state was set between steps, giving them kineticGiven (J): the health checks'
+  /// energy budget grows with it (RunHealth::stateEdited; before the run starts, the budget is
+  /// taken from the state as it then is).
+  void stateEdited(double kineticGiven) {
+    if (health_) health_->stateEdited(kineticGiven);
   }
 
   const RunReport& report() const { return report_; }

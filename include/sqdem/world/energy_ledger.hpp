@@ -3,12 +3,15 @@
 // the particles by the walls (kinematic bodies) and by gravity, against where it went, every
 // term accumulated step by step since the ledger started (J):
 //
-//   W_bodies + W_gravity = dE_kin + dU + D_plastic + D_damping + D_tangential + D_drag + residual
+//   W_bodies + W_gravity + W_edits = dE_kin + dU + D_plastic + D_damping + D_tangential + D_drag + residual
 //
 //   W_bodies      sum over walls of -(F_n + F_{n+1}) / 2 . v dt - (T_n + T_{n+1}) / 2 . w dt, with F, T
 //                 the force and torque the particles exert on the wall (about its reference
 //                 point), v its velocity and w its spin vector during the step
 //   W_gravity     g . sum m v_{n+1/2} dt (exact: the drift moves x by v_{n+1/2} dt)
+//   W_edits       the kinetic energy given by state set between steps (World::particlesEdited);
+//                 a particle moved into an overlap stores elastic energy no work paid for: it
+//                 shows as negative D_plastic
 //   U             the elastic energy the contacts' normal laws store now (StoredEnergyLaw)
 //   D_plastic     the work absorbed by the contacts' rate-independent normal forces less dU: the
 //                 dents of a plastic law (for an elastic law it measures the quadrature error)
@@ -29,7 +32,7 @@ class World;
 struct Wall;
 
 struct EnergyLedger {
-  double bodies = 0.0, gravity = 0.0;               ///< work done on the particles (J)
+  double bodies = 0.0, gravity = 0.0, edits = 0.0;  ///< work done on the particles (J)
   double normal = 0.0, damping = 0.0, tangential = 0.0, drag = 0.0;  ///< absorbed (J)
   double stored = 0.0;                               ///< U now (J)
   double initialKinetic = 0.0, initialStored = 0.0;  ///< E_kin and U when the ledger started (J)
@@ -42,7 +45,7 @@ struct EnergyLedger {
 
   double plastic() const { return normal - (stored - initialStored); }
   double residual(double kinetic) const {
-    return bodies + gravity - (kinetic - initialKinetic) - normal - damping - tangential - drag;
+    return bodies + gravity + edits - (kinetic - initialKinetic) - normal - damping - tangential - drag;
   }
 };
 

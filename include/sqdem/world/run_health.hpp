@@ -9,8 +9,9 @@
 //    |F . v| dt of the moving walls, and a floor of 1 m/s per particle so that a scene starting
 //    at rest without gravity has room for adhesion and small disturbances. A stable explicit
 //    integration conserves or dissipates energy; an unstable one grows it geometrically, far
-//    past this bound within a few dozen steps. Energy given to the particles from outside the
-//    step loop (state set between steps: scene/simulation.hpp) joins the budget (addEnergy);
+//    past this bound within a few dozen steps. State set between steps (scene/simulation.hpp)
+//    adds the kinetic energy it gave, and after the next step the elastic energy of the
+//    contacts then (the overlaps a moved particle made), to the budget (stateEdited);
 //  - growing deep overlaps: contacts deeper than half a volume radius in 10 consecutive checks.
 
 #include <cstdint>
@@ -31,14 +32,18 @@ class RunHealth {
   std::string afterStep(const World& world);
 
   double budget() const { return budget_ + wallWork_; }  ///< (J)
-  /// Energy given to the particles from outside the steps (J, >= 0).
-  void addEnergy(double joules) { budget_ += joules; }
+  /// Particle state was set between steps, giving them kineticGiven (J, >= 0).
+  void stateEdited(double kineticGiven) {
+    budget_ += kineticGiven;
+    elasticPending_ = true;
+  }
 
  private:
   double budget_ = 0.0, wallWork_ = 0.0;
   long steps_ = 0;
   long long lastDeepOverlaps_ = 0;
   int deepStreak_ = 0;
+  bool elasticPending_ = false;  ///< the next step adds its contacts' elastic energy to the budget
 };
 
 }  // namespace sqdem

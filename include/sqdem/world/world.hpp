@@ -138,11 +138,14 @@ class World {
 
   /// Advances one step (computes the initial forces first if needed).
   void step();
-  /// Call after setting particle state between steps (positions, velocities, rotations): the
+  /// Call after setting particle state between steps (positions, velocities, rotations), with
+  /// the kinetic energy before (J); returns the kinetic energy the edit gave (J, < 0: took). The
   /// pairs' separation bounds, which assume the particles moved by their velocities alone, are
-  /// dropped, so every pair is solved again at the next step. The neighbour list needs nothing:
-  /// its rebuild test measures every displacement since its build, an edit's too.
-  void particlesEdited() { interactions_.forgetSeparations(); }
+  /// dropped, so every pair is solved again at the next step; the energy ledger books the
+  /// energy given as work done from outside (EnergyLedger::edits). The neighbour list needs
+  /// nothing: its rebuild test measures every displacement since its build, an edit's too.
+  /// Collective.
+  double particlesEdited(double kineticBefore);
   /// Computes contacts and forces at the current state (no integration).
   void computeForces();
 
