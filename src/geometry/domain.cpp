@@ -21,4 +21,11 @@ Vec3 Domain::minimumImage(Vec3 d) const {
   return d;
 }
 
+int Domain::outsideAlong(const Vec3& x) const {
+  for (int d = 0; d < 3; ++d) {
+    if (!periodic[d] && (x(d) < lo(d) || x(d) > hi(d))) return d;
+  }
+  return -1;
+}
+
 }  // namespace sqdem

@@ -68,10 +68,8 @@ World buildWorld(const Scene& scene) {
   for (const ParticleSpec& p : scene.particles) {  // explicit particles first
     shapes.push_back(p.shape ? sampleShape(rng, scene.shapes[*p.shape])  // a fixed family: no draw
                              : Superquadric(p.semiAxes.x(), p.semiAxes.y(), p.semiAxes.z(), p.n1, p.n2));
-    for (int d = 0; d < 3; ++d) {
-      if (!scene.domain.periodic[d] && (p.centre(d) < scene.domain.lo(d) || p.centre(d) > scene.domain.hi(d))) {
-        throw SceneError(scene.path + ": " + p.origin + ": the centre lies outside the domain along " + "xyz"[d]);
-      }
+    if (const int d = scene.domain.outsideAlong(p.centre); d >= 0) {
+      throw SceneError(scene.path + ": " + p.origin + ": the centre lies outside the domain along " + "xyz"[d]);
     }
     materialOf.push_back(p.material);
     centres.push_back(scene.domain.wrap(p.centre));

@@ -39,14 +39,11 @@ double quaternionNorm(std::span<const double> rows, std::size_t i) {
 void setPositions(Simulation& simulation, std::span<const double> rows) {
   const Domain& domain = simulation.world().domain();
   checkRows(simulation, rows, 3, "position", [&](std::size_t i) {
-    for (int d = 0; d < 3; ++d) {
-      const double x = rows[3 * i + static_cast<std::size_t>(d)];
-      if (!domain.periodic[d] && (x < domain.lo(d) || x > domain.hi(d))) {
-        char bounds[96];
-        std::snprintf(bounds, sizeof bounds, "[%.6g, %.6g] m", domain.lo(d), domain.hi(d));
-        throw std::invalid_argument("position: row " + std::to_string(i) + " lies outside the domain along " + "xyz"[d] +
-                                    " (not periodic: " + bounds + ")");
-      }
+    if (const int d = domain.outsideAlong(row3(rows, i)); d >= 0) {
+      char bounds[96];
+      std::snprintf(bounds, sizeof bounds, "[%.6g, %.6g] m", domain.lo(d), domain.hi(d));
+      throw std::invalid_argument("position: row " + std::to_string(i) + " lies outside the domain along " + "xyz"[d] +
+                                  " (not periodic: " + bounds + ")");
     }
   });
   simulation.editParticles([&](ParticleStore& p) {

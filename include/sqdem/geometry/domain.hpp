@@ -18,6 +18,9 @@ struct Domain {
   Vec3 wrap(Vec3 x) const;
   /// The shortest periodic image of a separation d (d itself along the other directions).
   Vec3 minimumImage(Vec3 d) const;
+  /// The first direction that is not periodic along which x lies outside [lo, hi] (0, 1, 2),
+  /// or -1: where a particle's centre may not be put.
+  int outsideAlong(const Vec3& x) const;
 };
 
 }  // namespace sqdem
