@@ -499,8 +499,8 @@ TEST(Engine, SceneErrorsNameLineKeyAndWhatIsAllowed) {
                    "yield_pressure, elastic_stiffness, plastic_stiffness); 'roughness' is a key of normal: elliptic_hertz, "
                    "volume_sphere_hertz, elliptic_jkr (Greenwood-Williamson roughness is built on elastic asperities");
   expectSceneError(withInteraction("    normal: jamari\n    hardness: 1.0e6\n    surface_energy: 0.1\n"),
-                   "'surface_energy' is a key of normal: becker_kamlah, haervig_jkr, elliptic_jkr, nan_adhesive (adhesion goes "
-                   "with haervig_jkr, elliptic_jkr, nan_adhesive and becker_kamlah; an adhesive form of jamari is not built)");
+                   "'surface_energy' is a key of normal: becker_kamlah, haervig_jkr, elliptic_jkr, nan_adhesive (an adhesive "
+                   "form of jamari is not built)");
   expectSceneError(withInteraction("    normal: elliptic_hertz\n    rolling_hysteresis: 0.5\n"),
                    "'interactions[0].rolling_hysteresis': needs normal: haervig_jkr");
   expectSceneError(withInteraction("    normal: elliptic_jkr\n    surface_energy: -0.1\n"),

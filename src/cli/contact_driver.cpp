@@ -95,7 +95,7 @@ int writeContact(const ContactDrive& drive, const fs::path& outDir, bool allowDe
   std::string xLabel = (drive.plotTangential ? "tangential displacement (" : "overlap (") + xUnit + ")";
   std::string yLabel = (drive.plotTangential ? "tangential force (" : "normal force (") + yUnit + ")";
   if (drive.plotNormalised) {
-    const probe::YieldPoint& reference = *drive.curves.front().yield;
+    const YieldPoint& reference = *drive.curves.front().yield;
     xs = reference.overlap;
     ys = reference.force;
     xLabel = "overlap / yield overlap of " + drive.curves.front().label;

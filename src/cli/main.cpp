@@ -61,8 +61,8 @@ constexpr Command commands[] = {
     {"contact", R"(  contact <file|-> [--out DIR]
                          Single-contact driver: drives one contact (two posed shapes through the
                          detector, or prescribed radii) along a normal (and optional tangential)
-                         displacement history with one or more laws (hertz, becker_kamlah, jkr,
-                         nan); writes one CSV per curve, a gnuplot script and a PNG to DIR
+                         displacement history with one or more of the normal laws
+                         (docs/contact_laws.md); writes one CSV per curve, a gnuplot script and a PNG to DIR
                          (default .), and prints a JSON summary. See README.md and examples/.
 )",
      sqdem::cli::contactDriver},

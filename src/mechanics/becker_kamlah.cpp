@@ -137,7 +137,7 @@ NormalResponse BeckerKamlahLaw::force(const NormalContact& c, double overlap, Hi
   if (surfaceEnergy == 0.0 && !(overlap > 0.0)) return {.acting = false};
   const BeckerFactors geometry = beckerFactors(c.radii);
   const BeckerKamlah law(geometry, at(c, geometry));
-  if (surfaceEnergy > 0.0) return adhesive(law, c, overlap, h);
+  if (surfaceEnergy > 0.0) return attached(law, c, overlap, h);
   const BeckerKamlahState s = law.evaluate(overlap, h.plastic);
   return {.force = s.force,
           .stiffness = 2.0 * c.effectiveModulus * c.factors.gamma * std::sqrt(c.radii.Rc) * std::sqrt(overlap),
@@ -152,7 +152,7 @@ double BeckerKamlahLaw::storedEnergy(const NormalContact& c, double overlap, con
   return 0.4 * force * (overlap - law.dentAfter(h.plastic.maxOverlap).plasticOverlap);
 }
 
-NormalResponse BeckerKamlahLaw::adhesive(const BeckerKamlah& law, const NormalContact& c, double overlap, History& h) const {
+NormalResponse BeckerKamlahLaw::attached(const BeckerKamlah& law, const NormalContact& c, double overlap, History& h) const {
   if (!h.attached && overlap < 0.0) return {.acting = false};
   const BeckerKamlahState s = law.evaluate(overlap, h.plastic);  // the plastic state
   const BeckerKamlahDent dent = law.dentAfter(h.plastic.maxOverlap);
@@ -177,6 +177,27 @@ double BeckerKamlahLaw::reach(double effectiveModulus, double R) const {
   if (surfaceEnergy == 0.0) return 0.0;
   const CircularJkr jkr{effectiveModulus, 2.0 * surfaceEnergy, R};
   return -4.0 * jkr.overlapAt(jkr.minimumContactRadius());
+}
+
+void BeckerKamlahLaw::check(const NormalContact& c) const {
+  if (parameters.transition && parameters.lambdaMax == 0.0 && !(c.radiusSum > 0.0)) {
+    throw std::invalid_argument("the NMC fits (002 Eq. 54) need r_IJ, the sum of the pair's volume radii: give the "
+                                "geometry as 'particles', or give 'lambda_max' and 'epsilon_max'");
+  }
+}
+
+YieldPoint BeckerKamlahLaw::yieldPoint(const NormalContact& c) const {
+  const BeckerFactors g = beckerFactors(c.radii);
+  const BeckerKamlah law(g, at(c, g));
+  return {law.yieldOverlap(), law.yieldForce()};
+}
+
+std::vector<LawConstant> BeckerKamlahLaw::constants(const NormalContact& c) const {
+  const BeckerFactors g = beckerFactors(c.radii);
+  const BeckerKamlahParameters p = at(c, g);
+  const BeckerKamlah law(g, p);
+  return {{"delta_Y", law.yieldOverlap()}, {"F_pY", law.yieldForce()}, {"delta_max", law.plasticLimitOverlap()},
+          {"lambda_max", p.lambdaMax},     {"epsilon_max", p.epsilonMax}};
 }
 
 }  // namespace sqdem

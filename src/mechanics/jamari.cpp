@@ -67,9 +67,7 @@ JamariLaw JamariLaw::read(const LawInput& in, const PairElasticity& pair) {
 
 NormalResponse JamariLaw::force(const NormalContact& c, double overlap, History& h) const {
   if (!(overlap > 0.0)) return {.acting = false};
-  JamariParameters p = parameters;
-  p.effectiveModulus = c.effectiveModulus;
-  const JamariElasticPlastic law(c.radii, c.factors, p);
+  const JamariElasticPlastic law = at(c);
   const bool loading = overlap >= h.maxOverlap;
   const JamariElasticPlastic::Point point = law.at(overlap, h.maxOverlap);
   if (loading) h.maxOverlap = overlap;

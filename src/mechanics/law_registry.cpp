@@ -47,25 +47,23 @@ NormalLaw readAs(const LawInput& in, const PairElasticity& pair) {
 }
 
 constexpr std::array entries{
-    NormalLawEntry{"elliptic_hertz", true, hertzKeys, readHertz},
-    NormalLawEntry{"volume_sphere_hertz", false, hertzKeys, readHertz},
-    NormalLawEntry{"becker_kamlah", true, BeckerKamlahLaw::keys, readAs<BeckerKamlahLaw>},
-    NormalLawEntry{"haervig_jkr", true, HaervigJkrLaw::keys, readAs<HaervigJkrLaw>},
-    NormalLawEntry{"elliptic_jkr", true, jkrKeys, readJkr},
-    NormalLawEntry{"nan_adhesive", true, NanAdhesiveLaw::keys, readAs<NanAdhesiveLaw>},
-    NormalLawEntry{"jamari", true, JamariLaw::keys, readAs<JamariLaw>},
+    NormalLawEntry{"elliptic_hertz", true, hertzKeys, readHertz, traitsOf<HertzLaw>(Adhesion::Never)},
+    NormalLawEntry{"volume_sphere_hertz", false, hertzKeys, readHertz, traitsOf<HertzLaw>(Adhesion::Never)},
+    NormalLawEntry{"becker_kamlah", true, BeckerKamlahLaw::keys, readAs<BeckerKamlahLaw>,
+                   traitsOf<BeckerKamlahLaw>(Adhesion::WithSurfaceEnergy)},
+    NormalLawEntry{"haervig_jkr", true, HaervigJkrLaw::keys, readAs<HaervigJkrLaw>, traitsOf<HaervigJkrLaw>(Adhesion::Always)},
+    NormalLawEntry{"elliptic_jkr", true, jkrKeys, readJkr, traitsOf<EllipticJkrLaw>(Adhesion::Always)},
+    NormalLawEntry{"nan_adhesive", true, NanAdhesiveLaw::keys, readAs<NanAdhesiveLaw>, traitsOf<NanAdhesiveLaw>(Adhesion::Always)},
+    NormalLawEntry{"jamari", true, JamariLaw::keys, readAs<JamariLaw>, traitsOf<JamariLaw>(Adhesion::Never)},
 };
 
-/// Why a key of some laws is not combined with the others (appended to the message).
-std::string_view combinationRefused(std::string_view key) {
+/// Why a key of some laws is not combined with law `what` (appended to the message).
+std::string combinationRefused(std::string_view key, std::string_view what) {
   if (key == "roughness") {
     return "Greenwood-Williamson roughness is built on elastic asperities, Hertz or elliptic JKR; the seeds give no "
            "rough plastic law";
   }
-  if (key == "surface_energy") {
-    return "adhesion goes with haervig_jkr, elliptic_jkr, nan_adhesive and becker_kamlah; an adhesive form of jamari "
-           "is not built";
-  }
+  if (key == "surface_energy") return "an adhesive form of " + std::string(what) + " is not built";
   return {};
 }
 
@@ -77,20 +75,14 @@ void allowOnly(const LawInput& in, std::span<const std::string_view> allowed, st
       if (std::find(e.keys.begin(), e.keys.end(), key) != e.keys.end()) owners.push_back(e.name);
     }
     const std::string own = in.ownKeys(), lawKeys = std::string(what) + ": " + (allowed.empty() ? "none" : joinKeys(allowed));
-    const std::string_view reason = owners.empty() ? std::string_view() : combinationRefused(key);
+    const std::string reason = owners.empty() ? std::string() : combinationRefused(key, what);
     in.fail(key, "unknown key (allowed: " + (own.empty() ? lawKeys : own + ", and for " + lawKeys) + ")" +
                      (owners.empty() ? "" : "; '" + key + "' is a key of normal: " + joinKeys(owners)) +
-                     (reason.empty() ? "" : " (" + std::string(reason) + ")"));
+                     (reason.empty() ? "" : " (" + reason + ")"));
   }
 }
 
 }  // namespace
-
-bool adhesive(const NormalLaw& law) {
-  if (const auto* bk = std::get_if<BeckerKamlahLaw>(&law)) return bk->surfaceEnergy > 0.0;
-  return std::holds_alternative<HaervigJkrLaw>(law) || std::holds_alternative<EllipticJkrLaw>(law) ||
-         std::holds_alternative<RoughJkrLaw>(law) || std::holds_alternative<NanAdhesiveLaw>(law);
-}
 
 NormalLaw readNormalLaw(const NormalLawEntry& entry, const LawInput& in, const PairElasticity& pair) {
   allowOnly(in, entry.keys, entry.name);
@@ -98,6 +90,18 @@ NormalLaw readNormalLaw(const NormalLawEntry& entry, const LawInput& in, const P
 }
 
 std::span<const NormalLawEntry> normalLaws() { return entries; }
+
+std::string lawNames(bool (*pick)(const NormalLawEntry&)) {
+  std::vector<std::string_view> names;
+  for (const NormalLawEntry& e : entries) {
+    if (pick(e)) names.push_back(e.name);
+  }
+  std::string out;
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    out += (k == 0 ? "" : k + 1 == names.size() ? " or " : ", ") + std::string(names[k]);
+  }
+  return out;
+}
 
 const NormalLawEntry& normalLaw(std::string_view name, const LawInput& in, std::string_view key) {
   std::vector<std::string_view> names;

@@ -247,8 +247,9 @@ ContactDrive driveContact(const json& input, const std::string& defaultName) {
     tangentialTemplate.angle = number(t, "angle", "tangential", 0.0) * pi / 180.0;
     for (const Curve& c : curves) {
       if (c.law->adhesive()) {
-        throw InputError("tangential: the Mindlin-Deresiewicz drive needs a non-adhesive normal law "
-                         "(elliptic_hertz, becker_kamlah or jamari); curve '" + c.label + "' is adhesive");
+        throw InputError("tangential: the Mindlin-Deresiewicz drive needs a non-adhesive normal law (" +
+                         lawNames([](const NormalLawEntry& e) { return e.curvatures && e.traits.adhesion != Adhesion::Always; }) +
+                         ", without surface_energy); curve '" + c.label + "' is adhesive");
       }
     }
   }
@@ -261,7 +262,8 @@ ContactDrive driveContact(const json& input, const std::string& defaultName) {
   if (tangentialPlot && path.tangential.empty()) throw InputError("plot: quantity 'tangential' needs 'tangential'");
   if (tangentialPlot && normalised) throw InputError("plot: normalise 'yield' applies to the normal quantity only");
   if (normalised && !curves.front().law->yield()) {
-    throw InputError("plot: normalise 'yield' needs a first curve with a yield point (becker_kamlah, nan_adhesive or jamari)");
+    throw InputError("plot: normalise 'yield' needs a first curve with a yield point (" +
+                     lawNames([](const NormalLawEntry& e) { return e.traits.plastic; }) + ")");
   }
 
   ContactDrive drive{name, title, path.normal, path.tangential, {}, normalised, tangentialPlot};

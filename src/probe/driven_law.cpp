@@ -2,14 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace sqdem::probe {
 namespace {
-
-template <class... F>
-struct Overloaded : F... {
-  using F::operator()...;
-};
 
 /// A law's keys in a JSON object (law_input.hpp); "type" and "eccentricity" are the driver's.
 class JsonLawInput final : public LawInput {
@@ -77,17 +73,10 @@ DrivenLaw::DrivenLaw(const json& law, const std::string& where, const RelativeRa
   adhesive_ = sqdem::adhesive(law_);
   contact_ = {.radii = radii, .factors = hertzFactors(radii.ratio(), m), .effectiveModulus = pair.effectiveModulus,
               .radiusSum = meanRadiusSum};
-  if (const auto* bk = std::get_if<BeckerKamlahLaw>(&law_);
-      bk && bk->parameters.transition && bk->parameters.lambdaMax == 0.0 && !(meanRadiusSum > 0.0)) {
-    throw InputError(where + ": the NMC fits (002 Eq. 54) need r_IJ: give the geometry as 'particles', "
-                             "or give 'lambda_max' and 'epsilon_max'");
-  }
-  if (const auto* nan = std::get_if<NanAdhesiveLaw>(&law_)) {
-    try {
-      nan->at(contact_);
-    } catch (const std::invalid_argument& e) {
-      throw InputError(where + ": " + e.what());
-    }
+  try {
+    checkContact(law_, contact_);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(where + ": " + e.what());
   }
 }
 
@@ -100,62 +89,12 @@ LawSample DrivenLaw::at(double overlap) {
   return {r.force, r.area > 0.0 ? std::optional(r.area) : std::nullopt, r.regime, true};
 }
 
-std::optional<YieldPoint> DrivenLaw::yield() const {
-  return std::visit(Overloaded{
-                        [&](const BeckerKamlahLaw& l) -> std::optional<YieldPoint> {
-                          const BeckerFactors g = beckerFactors(contact_.radii);
-                          const BeckerKamlah law(g, l.at(contact_, g));
-                          return YieldPoint{law.yieldOverlap(), law.yieldForce()};
-                        },
-                        [&](const NanAdhesiveLaw& l) -> std::optional<YieldPoint> {
-                          const NanAdhesivePlastic law = l.at(contact_);
-                          return YieldPoint{law.yieldOverlap(), law.yieldForce()};
-                        },
-                        [&](const JamariLaw& l) -> std::optional<YieldPoint> {
-                          JamariParameters p = l.parameters;
-                          p.effectiveModulus = contact_.effectiveModulus;
-                          const JamariElasticPlastic law(contact_.radii, contact_.factors, p);
-                          return YieldPoint{law.yieldOverlap(), law.loadingForce(law.yieldOverlap())};
-                        },
-                        [](const auto&) -> std::optional<YieldPoint> { return std::nullopt; },
-                    },
-                    law_);
-}
+std::optional<YieldPoint> DrivenLaw::yield() const { return yieldPoint(law_, contact_); }
 
 json DrivenLaw::constants() const {
-  const HertzFactors& f = contact_.factors;
-  return std::visit(
-      Overloaded{
-          [&](const BeckerKamlahLaw& l) -> json {
-            const BeckerFactors g = beckerFactors(contact_.radii);
-            const BeckerKamlahParameters p = l.at(contact_, g);
-            const BeckerKamlah law(g, p);
-            return {{"delta_Y", law.yieldOverlap()},         {"F_pY", law.yieldForce()},
-                    {"delta_max", law.plasticLimitOverlap()}, {"lambda_max", p.lambdaMax},
-                    {"epsilon_max", p.epsilonMax},           {"transition", p.transition}};
-          },
-          [&](const HaervigJkrLaw& l) -> json {
-            const HaervigJkr law = l.at(contact_);
-            return {{"pull_off_force", -law.criticalForce()}, {"a_0", law.equilibriumContactRadius()}};
-          },
-          [&](const EllipticJkrLaw& l) -> json {
-            const EllipticJkr law = l.at(contact_);
-            return {{"pull_off_force", law.pullOffForce()}, {"detachment_overlap", law.detachmentOverlap()}};
-          },
-          [&](const NanAdhesiveLaw& l) -> json {
-            const NanAdhesivePlastic law = l.at(contact_);
-            return {{"alpha_y", law.yieldOverlap()}, {"f_y", law.yieldForce()}, {"f_ce", law.pullOffForceElastic()},
-                    {"k_el", law.kEl()},             {"k_cl", law.kCl()},       {"k_p", law.kP()}};
-          },
-          [&](const JamariLaw& l) -> json {
-            JamariParameters p = l.parameters;
-            p.effectiveModulus = contact_.effectiveModulus;
-            const JamariElasticPlastic law(contact_.radii, contact_.factors, p);
-            return {{"delta_1", law.yieldOverlap()}, {"delta_2", law.fullyPlasticOverlap()}};
-          },
-          [&](const auto&) -> json { return {{"e2", f.e2}, {"gamma", f.gamma}, {"beta", f.beta}}; },
-      },
-      law_);
+  json out = json::object();
+  for (const LawConstant& c : lawConstants(law_, contact_)) out[c.name] = c.value;
+  return out;
 }
 
 }  // namespace sqdem::probe

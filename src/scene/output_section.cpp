@@ -34,8 +34,9 @@ void readOutput(const Reader& r, const YAML::Node& root, Scene& scene) {
     for (std::size_t k = 0; scene.output.energy && k < scene.interactions.size(); ++k) {
       if (!storesEnergy(scene.interactions[k].normal)) {
         r.fail(out["energy"], "output.energy",
-               "the energy ledger needs every interaction's normal law to state its stored elastic energy "
-               "(elliptic_hertz, volume_sphere_hertz, becker_kamlah without surface_energy); interactions[" +
+               "the energy ledger needs every interaction's normal law to state its stored elastic energy (" +
+                   lawNames([](const NormalLawEntry& e) { return e.traits.storesEnergy; }) +
+                   ", without surface_energy); interactions[" +
                    std::to_string(k) + "] uses " + scene.interactions[k].normalName);
       }
     }

@@ -144,9 +144,16 @@ struct BeckerKamlahLaw {
   /// With adhesion: 4 |delta_d| of the JKR contact of radius R, covering dents of radius up to
   /// 64 R (delta_d ~ R^1/3); else 0.
   double reach(double effectiveModulus, double R) const;
+  bool adhesive() const { return surfaceEnergy > 0.0; }
+  /// The NMC fits (002 Eq. 54) need the contact's r_IJ.
+  void check(const NormalContact& c) const;
+  /// (delta_Y, F_pY) at this contact.
+  YieldPoint yieldPoint(const NormalContact& c) const;
+  /// delta_Y, F_pY, delta_max, lambda_max, epsilon_max at this contact.
+  std::vector<LawConstant> constants(const NormalContact& c) const;
 
  private:
-  NormalResponse adhesive(const BeckerKamlah& law, const NormalContact& c, double overlap, History& h) const;
+  NormalResponse attached(const BeckerKamlah& law, const NormalContact& c, double overlap, History& h) const;
 };
 
 }  // namespace sqdem

@@ -81,6 +81,12 @@ struct HaervigJkrLaw {
   NormalResponse force(const NormalContact& c, double overlap, History&) const;
   double range(const History&) const { return 0.0; }
   double reach(double, double) const { return 0.0; }
+  bool adhesive() const { return true; }
+  /// pull_off_force (N, < 0: a pull) and a_0, the contact radius at zero load (m).
+  std::vector<LawConstant> constants(const NormalContact& c) const {
+    const HaervigJkr law = at(c);
+    return {{"pull_off_force", -law.criticalForce()}, {"a_0", law.equilibriumContactRadius()}};
+  }
 };
 
 /// rolling_hysteresis, the engine's rolling component with normal: haervig_jkr (Eqs. 18-22):

@@ -75,6 +75,22 @@ struct JamariLaw {
   NormalResponse force(const NormalContact& c, double overlap, History& h) const;
   double range(const History&) const { return 0.0; }
   double reach(double, double) const { return 0.0; }
+  /// The law at this contact (its E*).
+  JamariElasticPlastic at(const NormalContact& c) const {
+    JamariParameters p = parameters;
+    p.effectiveModulus = c.effectiveModulus;
+    return {c.radii, c.factors, p};
+  }
+  /// (delta_1, F(delta_1)) at this contact.
+  YieldPoint yieldPoint(const NormalContact& c) const {
+    const JamariElasticPlastic law = at(c);
+    return {law.yieldOverlap(), law.loadingForce(law.yieldOverlap())};
+  }
+  /// delta_1 (first yield) and delta_2 (fully plastic), m.
+  std::vector<LawConstant> constants(const NormalContact& c) const {
+    const JamariElasticPlastic law = at(c);
+    return {{"delta_1", law.yieldOverlap()}, {"delta_2", law.fullyPlasticOverlap()}};
+  }
 };
 
 }  // namespace sqdem

@@ -112,6 +112,12 @@ struct EllipticJkrLaw {
   /// |detachment overlap| of the circular contact of radius R, times 2 (a bound for the elliptic
   /// ones of the same R_c1 = sqrt(Ri Rj) <= R; tests/jkr_test.cpp checks it over the ratios).
   double reach(double effectiveModulus, double R) const;
+  bool adhesive() const { return true; }
+  /// pull_off_force (N) and detachment_overlap (m).
+  std::vector<LawConstant> constants(const NormalContact& c) const {
+    const EllipticJkr law = at(c);
+    return {{"pull_off_force", law.pullOffForce()}, {"detachment_overlap", law.detachmentOverlap()}};
+  }
 };
 
 }  // namespace sqdem

@@ -16,9 +16,13 @@
 //   nan_adhesive         NanAdhesiveLaw          000 Eqs. 1-67                    attached, alpha_max
 //   jamari               JamariLaw               004 Eqs. 41-46 + elastic unloading  largest overlap
 
+#include <optional>
+#include <cstdint>
 #include <span>
+#include <string>
 #include <string_view>
 #include <variant>
+#include <vector>
 
 #include "sqdem/mechanics/becker_kamlah.hpp"
 #include "sqdem/mechanics/haervig.hpp"
@@ -34,23 +38,77 @@ namespace sqdem {
 using NormalLaw = std::variant<HertzLaw, GreenwoodWilliamsonLaw, BeckerKamlahLaw, HaervigJkrLaw, EllipticJkrLaw,
                                RoughJkrLaw, NanAdhesiveLaw, JamariLaw>;
 
+/// Whether a law holds contacts by adhesion.
+enum class Adhesion : std::uint8_t { Never, WithSurfaceEnergy, Always };
+
+/// What a registered law is, for the messages that name the laws able to do something.
+struct LawTraits {
+  Adhesion adhesion = Adhesion::Never;
+  bool plastic = false;       ///< it yields (YieldingLaw)
+  bool storesEnergy = false;  ///< it states its stored energy (StoredEnergyLaw), when not adhesive
+};
+template <class L>
+constexpr LawTraits traitsOf(Adhesion adhesion) {
+  return {adhesion, YieldingLaw<L>, StoredEnergyLaw<L>};
+}
+
 struct NormalLawEntry {
   std::string_view name;
   bool curvatures;  ///< uses the detector's curvatures (else the volume-equivalent spheres)
   std::span<const std::string_view> keys;  ///< the law's own keys
   NormalLaw (*read)(const LawInput& in, const PairElasticity& pair);
+  LawTraits traits;
 };
 
 std::span<const NormalLawEntry> normalLaws();
+/// The names of the registered laws `pick` chooses, as "a, b or c" (for messages).
+std::string lawNames(bool (*pick)(const NormalLawEntry&));
 /// The entry named `name`; `in.fail(key, ...)` listing the names when there is none.
 const NormalLawEntry& normalLaw(std::string_view name, const LawInput& in, std::string_view key);
 /// The law of `entry` from `in`: every key present must be the source's or the law's (a key of
 /// another law is named as such), then the law validates its values.
 NormalLaw readNormalLaw(const NormalLawEntry& entry, const LawInput& in, const PairElasticity& pair);
 
-/// Whether the law is adhesive (Haervig JKR, elliptic JKR smooth or rough, Nan, Becker-Kamlah
-/// with surface_energy).
-bool adhesive(const NormalLaw& law);
+/// Whether the law holds contacts by adhesion (AdhesiveLaw of normal_law.hpp).
+inline bool adhesive(const NormalLaw& law) {
+  return std::visit([](const auto& l) {
+    if constexpr (AdhesiveLaw<std::decay_t<decltype(l)>>) {
+      return l.adhesive();
+    } else {
+      return false;
+    }
+  }, law);
+}
+
+/// std::invalid_argument when the law's parameters admit no contact like `c` (CheckedLaw).
+inline void checkContact(const NormalLaw& law, const NormalContact& c) {
+  std::visit([&](const auto& l) {
+    if constexpr (CheckedLaw<std::decay_t<decltype(l)>>) l.check(c);
+  }, law);
+}
+
+/// Where a plastic law first yields at this contact (YieldingLaw); none for the others.
+inline std::optional<YieldPoint> yieldPoint(const NormalLaw& law, const NormalContact& c) {
+  return std::visit([&](const auto& l) -> std::optional<YieldPoint> {
+    if constexpr (YieldingLaw<std::decay_t<decltype(l)>>) {
+      return l.yieldPoint(c);
+    } else {
+      return std::nullopt;
+    }
+  }, law);
+}
+
+/// The law's own constants at this contact (ReportingLaw); the Hertz factors e^2, gamma, beta
+/// for a law without its own.
+inline std::vector<LawConstant> lawConstants(const NormalLaw& law, const NormalContact& c) {
+  return std::visit([&](const auto& l) -> std::vector<LawConstant> {
+    if constexpr (ReportingLaw<std::decay_t<decltype(l)>>) {
+      return l.constants(c);
+    } else {
+      return {{"e2", c.factors.e2}, {"gamma", c.factors.gamma}, {"beta", c.factors.beta}};
+    }
+  }, law);
+}
 
 /// A law's response through its own history type, kept in a contact's NormalHistory slot.
 template <NormalLawComponent Law>

@@ -115,6 +115,19 @@ struct NanAdhesiveLaw {
   double range(const History& h) const;
   /// 2 |alpha_jp| before yield for R* = R; throws like at().
   double reach(double effectiveModulus, double R) const;
+  bool adhesive() const { return true; }
+  void check(const NormalContact& c) const { at(c); }
+  /// (alpha_y, f_y) at this contact.
+  YieldPoint yieldPoint(const NormalContact& c) const {
+    const NanAdhesivePlastic law = at(c);
+    return {law.yieldOverlap(), law.yieldForce()};
+  }
+  /// alpha_y, f_y, f_ce, k_el, k_cl, k_p at this contact.
+  std::vector<LawConstant> constants(const NormalContact& c) const {
+    const NanAdhesivePlastic law = at(c);
+    return {{"alpha_y", law.yieldOverlap()}, {"f_y", law.yieldForce()}, {"f_ce", law.pullOffForceElastic()},
+            {"k_el", law.kEl()},             {"k_cl", law.kCl()},       {"k_p", law.kP()}};
+  }
 };
 
 }  // namespace sqdem

@@ -14,7 +14,15 @@
 //                                      whose relative radii are at most R (m): the candidate
 //                                      search and the detector's cut-off reach that far.
 // A law may also state the elastic energy its contact stores (StoredEnergyLaw, below): what the
-// energy ledger (world/energy_ledger.hpp) needs to tell stored from dissipated work.
+// energy ledger (world/energy_ledger.hpp) needs to tell stored from dissipated work. And it may
+// say of itself, each part found where a law has it (below), so that what the engine and the
+// single-contact driver ask of a law lives with the law:
+//   adhesive()           whether these parameters hold contacts by adhesion (AdhesiveLaw)
+//   yieldPoint(contact)  where a plastic law first yields (YieldingLaw)
+//   constants(contact)   the law's own constants at a contact, for the driver's report
+//                        (ReportingLaw)
+//   check(contact)       std::invalid_argument when its parameters admit no contact like
+//                        this one (CheckedLaw; the engine sizes its laws by their reach)
 
 #include <array>
 #include <string_view>
@@ -23,6 +31,7 @@
 #include <cstring>
 #include <type_traits>
 #include <utility>
+#include <vector>
 
 #include "sqdem/mechanics/elliptic.hpp"
 
@@ -65,6 +74,37 @@ concept StoredEnergyLaw = NormalLawComponent<L> &&
       { law.storesEnergy() } -> std::same_as<bool>;
       { law.storedEnergy(c, 0.0, h, 0.0) } -> std::convertible_to<double>;
     };
+
+/// Adhesion: the law pulls (a pull-off force) and holds contacts across gaps until they detach.
+template <class L>
+concept AdhesiveLaw = requires(const L& law) {
+  { law.adhesive() } -> std::same_as<bool>;
+};
+
+/// The onset of plastic flow of a contact: overlap (m) and force (N).
+struct YieldPoint {
+  double overlap = 0.0;
+  double force = 0.0;
+};
+template <class L>
+concept YieldingLaw = requires(const L& law, const NormalContact& c) {
+  { law.yieldPoint(c) } -> std::same_as<YieldPoint>;
+};
+
+/// A named constant of a law at one contact (SI units), in the single-contact driver's report.
+struct LawConstant {
+  const char* name;
+  double value;
+};
+template <class L>
+concept ReportingLaw = requires(const L& law, const NormalContact& c) {
+  { law.constants(c) } -> std::same_as<std::vector<LawConstant>>;
+};
+
+/// Whether the law's parameters admit this contact: check() throws std::invalid_argument saying
+/// why not.
+template <class L>
+concept CheckedLaw = requires(const L& law, const NormalContact& c) { law.check(c); };
 
 /// A contact's normal-law history record: fixed size, so contact records stay flat and
 /// trivially copyable; the law's own History is copied in and out of it.

@@ -71,6 +71,7 @@ struct RoughJkrLaw {
   NormalResponse force(const NormalContact& c, double overlap, History&) const;
   double range(const History&) const { return 4.0 * rough.sigma; }
   double reach(double, double) const { return 4.0 * rough.sigma; }
+  bool adhesive() const { return true; }
 };
 
 }  // namespace sqdem

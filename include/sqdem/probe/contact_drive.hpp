@@ -20,13 +20,13 @@ struct DrivenCurve {
   RelativeRadii radii;           ///< of the contact (from the detector's curvatures, or given)
   double meanRadiusSum = 0.0;    ///< r_IJ (m) of two posed particles; 0 for prescribed radii
   int detectorFailures = 0;      ///< steps whose overlap is the prescribed approach
-  json constants;                ///< the law's constants worth reporting (DrivenLaw::constants)
-  std::optional<YieldPoint> yield;
-  std::vector<double> overlap;       ///< (m)
-  std::vector<double> normalForce;   ///< (N), > 0 repulsive
-  std::vector<std::optional<double>> area;  ///< contact area (m^2), where the law defines one
-  std::vector<std::string> regime;   ///< the law's branch at each step
-  std::vector<double> tangentialForce;  ///< (N), empty without a tangential drive
+  json constants{};              ///< the law's constants worth reporting (DrivenLaw::constants)
+  std::optional<YieldPoint> yield{};
+  std::vector<double> overlap{};     ///< (m)
+  std::vector<double> normalForce{}; ///< (N), > 0 repulsive
+  std::vector<std::optional<double>> area{};  ///< contact area (m^2), where the law defines one
+  std::vector<std::string> regime{}; ///< the law's branch at each step
+  std::vector<double> tangentialForce{};  ///< (N), empty without a tangential drive
 };
 
 struct ContactDrive {

@@ -19,12 +19,6 @@ struct LawSample {
   bool contact = false;              ///< the law acts (attached, or touching)
 };
 
-/// A reference point for normalised plots: (delta_Y, F_pY) or (alpha_y, f_y).
-struct YieldPoint {
-  double overlap = 0.0;  ///< (m)
-  double force = 0.0;    ///< (N)
-};
-
 /// Materials of the two bodies (Pa, -).
 struct ContactMaterials {
   double youngsA, poissonA, youngsB, poissonB;
@@ -43,8 +37,9 @@ class DrivenLaw {
 
   /// Next point of the history (overlap in m).
   LawSample at(double overlap);
+  /// The law's first yield (YieldingLaw): the reference point of normalised plots.
   std::optional<YieldPoint> yield() const;
-  /// Law constants worth reporting (pull-off force, l_max, ...), as a JSON object.
+  /// The law's constants at this contact (lawConstants), as a JSON object.
   json constants() const;
   /// Adhesive laws cannot drive the Mindlin-Deresiewicz tangential law.
   bool adhesive() const { return adhesive_; }
