@@ -66,8 +66,8 @@ World crystalBed(const NormalLaw& law) {
     }
   }
   const double top = 2.0 * radius + (layers - 1) * layer;
-  world.addWall(Wall{.plane = Plane{Vec3::Zero(), Vec3::UnitZ()}});
-  world.addWall(Wall{.plane = Plane{Vec3(0.0, 0.0, top + 1e-6), -Vec3::UnitZ()}});
+  world.addWall(Wall{.surface = PlaneWall{Plane{Vec3::Zero(), Vec3::UnitZ()}}});
+  world.addWall(Wall{.surface = PlaneWall{Plane{Vec3(0.0, 0.0, top + 1e-6), -Vec3::UnitZ()}}});
   world.setTimeStep(5e-6);  // 0.12 x the Rayleigh time
   return world;
 }
@@ -77,13 +77,13 @@ World crystalBed(const NormalLaw& law) {
 PressCurve press(World& world, double pressure, double speed) {
   PressCurve c;
   Wall& plate = world.walls()[1];
-  const double area = world.wallArea(1), start = plate.plane.point.z();
+  const double area = world.wallArea(1), start = plate.get<PlaneWall>().plane.point.z();
   const auto sample = [&](auto& into) {
     const double p = plate.force.z() / area;
-    if (p > 0.0 && c.touched == 0.0) c.touched = plate.plane.point.z();
-    if (p > 0.0) c.released = plate.plane.point.z();
+    if (p > 0.0 && c.touched == 0.0) c.touched = plate.get<PlaneWall>().plane.point.z();
+    if (p > 0.0) c.released = plate.get<PlaneWall>().plane.point.z();
     c.peak = std::max(c.peak, p);
-    if (c.touched > 0.0) into.push_back({c.touched - plate.plane.point.z(), p});
+    if (c.touched > 0.0) into.push_back({c.touched - plate.get<PlaneWall>().plane.point.z(), p});
   };
   plate.velocity = Vec3(0.0, 0.0, -speed);
   for (long s = 0; plate.force.z() / area < pressure; ++s) {
@@ -91,9 +91,9 @@ PressCurve press(World& world, double pressure, double speed) {
     sample(c.loading);
     if (s > 2000000) throw std::runtime_error("the plate never reached its pressure");
   }
-  c.deepest = plate.plane.point.z();
+  c.deepest = plate.get<PlaneWall>().plane.point.z();
   plate.velocity = Vec3(0.0, 0.0, speed);
-  while (plate.plane.point.z() < std::max(c.touched, start) + 1e-6) {
+  while (plate.get<PlaneWall>().plane.point.z() < std::max(c.touched, start) + 1e-6) {
     world.step();
     sample(c.unloading);
   }

@@ -31,7 +31,7 @@ World makeWorld() {
   World world({Superquadric::ellipsoid(1.1e-3, 0.9e-3, 0.8e-3)}, {m}, d, 2e-4);
   world.setContactModel(0, 0, world.defaultContactModel(0, 0));
   Wall floor;
-  floor.plane = Plane{Vec3::Zero(), Vec3::UnitZ()};
+  floor.surface = PlaneWall{Plane{Vec3::Zero(), Vec3::UnitZ()}};
   world.addWall(floor);
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)

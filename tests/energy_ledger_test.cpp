@@ -78,7 +78,7 @@ PressResult pressCycle(World& world) {
   double top = 0.0;
   for (std::size_t i = 0; i < p.size(); ++i) top = std::max(top, p.position[i].z() + world.shapes()[p.shape[i]].boundingRadius());
   if (plate.force != Vec3::Zero()) throw std::runtime_error("the bed reached the parked plate");
-  plate.plane.point.z() = top + 0.1e-3;
+  plate.get<PlaneWall>().plane.point.z() = top + 0.1e-3;
   plate.velocity = Vec3(0.0, 0.0, -0.05);
   for (long s = 1; world.wallPressure(1) < 2000.0; ++s) {
     world.step(), track(s);
@@ -86,9 +86,9 @@ PressResult pressCycle(World& world) {
   }
   r.pressed = *world.energyLedger();
   r.kineticPressed = world.kineticEnergy();
-  const double lowest = plate.plane.point.z();
+  const double lowest = plate.get<PlaneWall>().plane.point.z();
   plate.velocity = Vec3(0.0, 0.0, 0.05);
-  for (long s = 1; plate.plane.point.z() < lowest + 1e-3; ++s) world.step(), track(s);
+  for (long s = 1; plate.get<PlaneWall>().plane.point.z() < lowest + 1e-3; ++s) world.step(), track(s);
   plate.velocity.setZero();
   for (long s = 1; s <= 20000; ++s) world.step(), track(s);
   r.released = *world.energyLedger();

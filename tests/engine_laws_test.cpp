@@ -176,7 +176,7 @@ TEST(EngineLaws, EllipticJkrSphereDetachesOnceFromAWallAtThePullOff) {
   ContactModel model = world.defaultContactModel(0, 0);
   model.normal = EllipticJkrLaw{gamma};
   world.setContactModel(0, 0, model);
-  world.addWall(Wall{.plane = Plane{Vec3::Zero(), Vec3::UnitX()}});  // the wall x = 0, B is the sphere
+  world.addWall(Wall{.surface = PlaneWall{Plane{Vec3::Zero(), Vec3::UnitX()}}});  // the wall x = 0, B is the sphere
   world.addParticle(0, 0, Vec3(R, 0.0, 0.0), Quat::Identity());
   world.setTimeStep(1e-6);
   const ClassicalJkr jkr{2.0 * gamma, R, effectiveModulus(E, nu, E, nu)};
@@ -254,7 +254,7 @@ TEST(EngineLaws, NanSphereSticksBelowAndReboundsAboveTheStickingVelocity) {
       ContactModel model = world.defaultContactModel(0, 1);
       model.normal = NanAdhesiveLaw{.surfaceEnergy = 0.5 * Gamma, .yieldPressure = py};
       world.setContactModel(0, 1, model);
-      world.addWall(Wall{.plane = Plane{Vec3::Zero(), Vec3::UnitZ()}, .material = 1});
+      world.addWall(Wall{.surface = PlaneWall{Plane{Vec3::Zero(), Vec3::UnitZ()}}, .material = 1});
       world.addParticle(0, 0, Vec3(0.0, 0.0, radius * (1.0 + 1e-4)), Quat::Identity());
       world.particles().velocity[0] = Vec3(0.0, 0.0, -speed);
       const double m = world.particles().mass[0], kEl = pi * radius * py;  // 000 Eq. 52
@@ -297,8 +297,8 @@ TEST(EngineLaws, BeckerKamlahPlatePressIsTwoDriverContactsInSeries) {
   ContactModel model = world.defaultContactModel(0, 0);
   model.normal = BeckerKamlahLaw{{.yieldStrength = Y}};
   world.setContactModel(0, 0, model);
-  world.addWall(Wall{.plane = Plane{Vec3::Zero(), Vec3::UnitZ()}});                     // floor
-  world.addWall(Wall{.plane = Plane{Vec3(0.0, 0.0, 2.0 * radius), -Vec3::UnitZ()}});  // plate
+  world.addWall(Wall{.surface = PlaneWall{Plane{Vec3::Zero(), Vec3::UnitZ()}}});                     // floor
+  world.addWall(Wall{.surface = PlaneWall{Plane{Vec3(0.0, 0.0, 2.0 * radius), -Vec3::UnitZ()}}});  // plate
   world.addParticle(0, 0, Vec3(0.0, 0.0, radius), Quat::Identity());
   world.setTimeStep(dt);            // 0.2 x the Rayleigh time
   world.setViscousDamping(2.5e7);   // 1/s
@@ -313,7 +313,7 @@ TEST(EngineLaws, BeckerKamlahPlatePressIsTwoDriverContactsInSeries) {
     plate.velocity = Vec3(0.0, 0.0, s <= steps ? -speed : speed);
     world.step();
     if (s % sampleEvery != 0 && s != steps) continue;  // and the turning point: the largest overlap
-    const double travel = 2.0 * radius - plate.plane.point.z();
+    const double travel = 2.0 * radius - plate.get<PlaneWall>().plane.point.z();
     const probe::LawSample d = driver.at(0.5 * travel);
     worst = std::max(worst, std::abs(plate.force.z() - d.force));  // the sphere pushes the plate up: > 0
     largest = std::max(largest, d.force);

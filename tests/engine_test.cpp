@@ -404,13 +404,13 @@ TEST(Engine, CylinderWallFromTheScene) {
                                                   "velocity: [0.1, 0, 0], material: glass}\n"))));
   ASSERT_EQ(world.walls().size(), 2u);
   const Wall& w = world.walls()[1];
-  EXPECT_EQ(w.shape, WallShape::Cylinder);
-  EXPECT_EQ(w.cylinder.axis, Vec3::UnitY());
-  EXPECT_EQ(w.cylinder.radius, 2.0e-3);
+  ASSERT_TRUE(w.is<CylinderWall>());
+  EXPECT_EQ(w.get<CylinderWall>().cylinder.axis, Vec3::UnitY());
+  EXPECT_EQ(w.get<CylinderWall>().cylinder.radius, 2.0e-3);
   EXPECT_EQ(w.angularVelocity, Vec3(0.0, -4.0, 0.0));
   EXPECT_EQ(w.velocity, Vec3(0.1, 0.0, 0.0));
   for (std::size_t i = 0; i < world.particles().size(); ++i) {
-    EXPECT_GT(w.distance(world.particles().position[i]), world.shapes()[world.particles().shape[i]].boundingRadius());
+    EXPECT_GT(w.get<CylinderWall>().distance(world.particles().position[i]), world.shapes()[world.particles().shape[i]].boundingRadius());
   }
 }
 

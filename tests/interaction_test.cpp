@@ -247,8 +247,8 @@ World shakenSpheres(SimdPath path) {
     for (std::uint32_t n : {0u, 1u}) world.setContactModel(m, n, world.defaultContactModel(m, n));
   }
   world.setSimdPath(path);
-  world.addWall(Wall{.plane = Plane{Vec3::Zero(), Vec3::UnitZ()}});
-  world.addWall(Wall{.plane = Plane{Vec3(0.0, 0.0, 4 * pitch), Vec3(0.05, 0.0, -1.0).normalized()},
+  world.addWall(Wall{.surface = PlaneWall{Plane{Vec3::Zero(), Vec3::UnitZ()}}});
+  world.addWall(Wall{.surface = PlaneWall{Plane{Vec3(0.0, 0.0, 4 * pitch), Vec3(0.05, 0.0, -1.0).normalized()}},
                      .velocity = Vec3(1e-3, 0.0, -1e-3), .material = 1});
   std::mt19937_64 rng(3);
   std::normal_distribution<double> speed(0.0, 2e-3), jitter(0.0, 5e-6);

@@ -32,10 +32,9 @@ World rollerOverParticle(const Superquadric& shape, double friction, double spin
     for (std::uint32_t b = a; b < 3; ++b) world.setContactModel(a, b, world.defaultContactModel(a, b));
   }
   const double height = shape.c();
-  world.addWall(Wall{.plane = Plane{Vec3::Zero(), Vec3::UnitZ()}, .material = 1});
+  world.addWall(Wall{.surface = PlaneWall{Plane{Vec3::Zero(), Vec3::UnitZ()}}, .material = 1});
   Wall top{.material = 2};
-  top.shape = WallShape::Cylinder;
-  top.cylinder = Cylinder{Vec3(0.0, 0.0, 2.0 * height + rollerRadius - squeeze), Vec3::UnitY(), rollerRadius};
+  top.surface = CylinderWall{Cylinder{Vec3(0.0, 0.0, 2.0 * height + rollerRadius - squeeze), Vec3::UnitY(), rollerRadius}};
   top.angularVelocity = spin * Vec3::UnitY();
   world.addWall(top);
   world.addParticle(0, 0, Vec3(0.0, 0.0, height), Quat::Identity());
@@ -67,7 +66,7 @@ TEST(KinematicBody, FrictionlessRollerOnlyPushes) {
     EXPECT_LT(b.velocity[0].z(), 0.0) << "pushed down";
     const Wall& roller = spinning.walls()[1];
     EXPECT_GT(roller.force.z(), 0.0) << "the particle pushes the roller up";
-    EXPECT_LT(std::abs(roller.torque.dot(roller.cylinder.axis)), 1e-12 * rollerRadius * roller.force.norm())
+    EXPECT_LT(std::abs(roller.torque.dot(roller.get<CylinderWall>().cylinder.axis)), 1e-12 * rollerRadius * roller.force.norm())
         << "a radial normal force has no moment about the axis";
   }
 }
@@ -86,10 +85,10 @@ TEST(KinematicBody, SpinningRollerDragsAlongItsSurfaceMotion) {
       EXPECT_GT(tangential.norm(), 0.0);
       // One contact: the torque about the axis is the tangential force times the lever arm
       // (the distance from the axis to the contact point), opposing the spin.
-      const double lever = roller.cylinder.fromAxis(c.point()).norm();
-      EXPECT_NEAR(std::abs(roller.torque.dot(roller.cylinder.axis)), lever * tangential.norm(),
+      const double lever = roller.get<CylinderWall>().cylinder.fromAxis(c.point()).norm();
+      EXPECT_NEAR(std::abs(roller.torque.dot(roller.get<CylinderWall>().cylinder.axis)), lever * tangential.norm(),
                   1e-9 * lever * tangential.norm());
-      EXPECT_LT(roller.torque.dot(roller.cylinder.axis) * spin, 0.0) << "the particle brakes the roller";
+      EXPECT_LT(roller.torque.dot(roller.get<CylinderWall>().cylinder.axis) * spin, 0.0) << "the particle brakes the roller";
       EXPECT_NEAR(lever, rollerRadius - 0.5 * c.overlap(), 1e-6 * rollerRadius) << "the lever is the radius";
     }
   }
@@ -104,9 +103,9 @@ TEST(KinematicBody, FiniteRollerActsOnlyWhereItIs) {
   const Superquadric shape = Superquadric::ellipsoid(1.5e-3, 1e-3, 0.8e-3);
   World infinite = rollerOverParticle(shape, 0.4, 300.0), under = rollerOverParticle(shape, 0.4, 300.0),
         beyond = rollerOverParticle(shape, 0.4, 300.0);
-  under.walls()[1].cylinder.halfLength = 2e-3;
-  beyond.walls()[1].cylinder.halfLength = 2e-3;
-  beyond.walls()[1].cylinder.point.y() += 2e-3 + rollerRadius + 2e-3;  // the end's hemisphere 2 mm short of the particle's axis station
+  under.walls()[1].get<CylinderWall>().cylinder.halfLength = 2e-3;
+  beyond.walls()[1].get<CylinderWall>().cylinder.halfLength = 2e-3;
+  beyond.walls()[1].get<CylinderWall>().cylinder.point.y() += 2e-3 + rollerRadius + 2e-3;  // the end's hemisphere 2 mm short of the particle's axis station
   for (int step = 0; step < 200; ++step) infinite.step(), under.step(), beyond.step();
   EXPECT_EQ(under.walls()[1].force, infinite.walls()[1].force);
   EXPECT_EQ(under.particles().velocity[0], infinite.particles().velocity[0]);
@@ -125,10 +124,9 @@ TEST(KinematicBody, RollerActsAcrossAPeriodicBoundary) {
     World world({Superquadric::ellipsoid(1.5e-3, 1e-3, 0.8e-3)}, {m}, box, 1e-4);
     world.setContactModel(0, 0, world.defaultContactModel(0, 0));
     Wall roller;
-    roller.shape = WallShape::Cylinder;
     // Periodic: at x = L - 0.7 mm, its image at -0.7 mm; open: at -0.7 mm itself.
     const double x = periodic ? length - 0.7e-3 : -0.7e-3;
-    roller.cylinder = Cylinder{Vec3(x, 0.0, 0.8e-3 + rollerRadius + 0.6e-3), Vec3::UnitY(), rollerRadius};
+    roller.surface = CylinderWall{Cylinder{Vec3(x, 0.0, 0.8e-3 + rollerRadius + 0.6e-3), Vec3::UnitY(), rollerRadius}};
     roller.angularVelocity = 100.0 * Vec3::UnitY();
     world.addWall(roller);
     world.addParticle(0, 0, Vec3(0.5e-3, 0.0, 0.6e-3), Quat(Eigen::AngleAxisd(0.3, Vec3(1, 1, 0).normalized())));

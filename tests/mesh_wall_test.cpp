@@ -205,12 +205,9 @@ double rollerForce(bool asMesh, bool curvatures) {
   Wall roller{.material = 1};
   const Vec3 axis(0.0, 0.0, r + R - squeeze);
   if (asMesh) {
-    roller.shape = WallShape::Mesh;
-    roller.mesh = world.addMesh(MeshFeatures(facetedCylinder(R, 64, 0.02)));
-    roller.origin = axis;
+    roller.surface = MeshWall{.mesh = world.addMesh(MeshFeatures(facetedCylinder(R, 64, 0.02))), .origin = axis};
   } else {
-    roller.shape = WallShape::Cylinder;
-    roller.cylinder = Cylinder{axis, Vec3::UnitY(), R};
+    roller.surface = CylinderWall{Cylinder{axis, Vec3::UnitY(), R}};
   }
   world.addWall(roller);
   world.addParticle(0, 0, Vec3::Zero(), Quat::Identity());
@@ -298,7 +295,7 @@ TEST(MeshWall, TurntableDragsASphereUntilItRolls) {
   std::cout << "turntable: after " << t << " s the table turned " << Omega * t << " rad; the sphere's slip "
             << worstSlip << " m/s (surface speed " << Omega * start.head<2>().norm() << " m/s); table work "
             << ledger.bodies << " J, friction " << ledger.tangential << " J, worst residual " << worstResidual << " J\n";
-  EXPECT_LT(std::abs(world.walls()[0].orientation.angularDistance(turned)), 1e-12);
+  EXPECT_LT(std::abs(world.walls()[0].get<MeshWall>().orientation.angularDistance(turned)), 1e-12);
   EXPECT_LT(worstSlip, 1e-3 * Omega * start.head<2>().norm()) << "rolls without slipping in the second half";
   const Vec3 v0 = halfwayVelocity, v1 = p.velocity[0];
   const double turn = std::atan2(v0.cross(v1).z(), v0.dot(v1)), rolling = 2.0 / 7.0 * Omega * (steps - steps / 2) * world.timeStep();

@@ -154,10 +154,10 @@ void expectSameBed(const char* file) {
   EXPECT_GT(contacts, 100);  // a bed, not a gas
   EXPECT_EQ(kinetic, one.kineticEnergy());
   EXPECT_EQ(floorForce, one.walls()[0].force);
-  if (one.walls()[0].shape == WallShape::Mesh) {  // particles rest on the ridges' edges too
+  if (one.walls()[0].is<MeshWall>()) {  // particles rest on the ridges' edges too
     long long edges = 0;
     for (const ContactView c : one.contacts()) {
-      edges += c.onWall() && one.meshes()[one.walls()[c.wall()].mesh].kind(c.feature()) == FeatureKind::Edge;
+      edges += c.onWall() && one.meshes()[one.walls()[c.wall()].get<MeshWall>().mesh].kind(c.feature()) == FeatureKind::Edge;
     }
     EXPECT_GT(edges, 0);
   }

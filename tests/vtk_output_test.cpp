@@ -67,10 +67,9 @@ World smallScene() {
                Superquadric(0.5e-3, 0.4e-3, 0.45e-3, 6.0, 6.0), Superquadric(0.5e-3, 0.45e-3, 0.4e-3, 2.0, 6.0)},
               {m}, box, 0.1e-3);
   world.setContactModel(0, 0, world.defaultContactModel(0, 0));
-  world.addWall(Wall{.plane = Plane{Vec3::Zero(), Vec3::UnitZ()}});
+  world.addWall(Wall{.surface = PlaneWall{Plane{Vec3::Zero(), Vec3::UnitZ()}}});
   Wall roller;
-  roller.shape = WallShape::Cylinder;
-  roller.cylinder = Cylinder{Vec3(0.0, 0.0, 2.5e-3), Vec3::UnitY(), 1e-3};
+  roller.surface = CylinderWall{Cylinder{Vec3(0.0, 0.0, 2.5e-3), Vec3::UnitY(), 1e-3}};
   roller.angularVelocity = Vec3(0.0, 5.0, 0.0);
   roller.velocity = Vec3(0.01, 0.0, 0.0);
   world.addWall(roller);

@@ -32,17 +32,17 @@ Vec3 areaVector(const WallSurfaces& s, std::size_t k) {
 // x-z side in the segment from (0, 2) to (1, 1), of length sqrt 2: a sqrt 2 x 2 rectangle.
 TEST(WallSurfaces, PlanesAreTheirCrossSectionsOfTheBox) {
   std::vector<Wall> walls(3);
-  walls[0].plane = Plane{Vec3::Zero(), Vec3::UnitZ()};
-  walls[1].plane = Plane{Vec3(0.0, 0.0, 1.5), -Vec3::UnitZ()};
-  walls[2].plane = Plane{Vec3(0.5, 1.0, 1.5), Vec3(1.0, 0.0, 1.0).normalized()};
+  walls[0].surface = PlaneWall{Plane{Vec3::Zero(), Vec3::UnitZ()}};
+  walls[1].surface = PlaneWall{Plane{Vec3(0.0, 0.0, 1.5), -Vec3::UnitZ()}};
+  walls[2].surface = PlaneWall{Plane{Vec3(0.5, 1.0, 1.5), Vec3(1.0, 0.0, 1.0).normalized()}};
   const WallSurfaces s = wallSurfaces(walls, {}, unitBox());
   ASSERT_EQ(s.polygons.size(), 3u);
   for (std::size_t k = 0; k < 3; ++k) {
     EXPECT_EQ(s.wall[k], k);
     const Vec3 a = areaVector(s, k);
     EXPECT_NEAR(a.norm(), k < 2 ? 2.0 : 2.0 * std::sqrt(2.0), 1e-12) << "wall " << k;
-    EXPECT_NEAR(a.normalized().dot(walls[k].plane.normal), 1.0, 1e-12) << "wall " << k;
-    for (const std::uint32_t i : s.polygons[k]) EXPECT_NEAR(walls[k].plane.normal.dot(s.points[i] - walls[k].plane.point), 0.0, 1e-12);
+    EXPECT_NEAR(a.normalized().dot(walls[k].get<PlaneWall>().plane.normal), 1.0, 1e-12) << "wall " << k;
+    for (const std::uint32_t i : s.polygons[k]) EXPECT_NEAR(walls[k].get<PlaneWall>().plane.normal.dot(s.points[i] - walls[k].get<PlaneWall>().plane.point), 0.0, 1e-12);
   }
   EXPECT_EQ(s.polygons[0].size(), 4u);
   EXPECT_EQ(s.polygons[2].size(), 4u);
@@ -52,13 +52,12 @@ TEST(WallSurfaces, PlanesAreTheirCrossSectionsOfTheBox) {
 // [0, 2], each facing away from the axis; the tube's lateral area approaches 2 pi R L.
 TEST(WallSurfaces, CylinderIsATubeAcrossTheBox) {
   std::vector<Wall> walls(1);
-  walls[0].shape = WallShape::Cylinder;
-  walls[0].cylinder = Cylinder{Vec3(0.5, 0.7, 2.0), Vec3::UnitY(), 0.25};
+  walls[0].surface = CylinderWall{Cylinder{Vec3(0.5, 0.7, 2.0), Vec3::UnitY(), 0.25}};
   const WallSurfaces s = wallSurfaces(walls, {}, unitBox(), 48);
   ASSERT_EQ(s.polygons.size(), 48u);
   double area = 0.0, lo = 1e9, hi = -1e9;
   for (const Vec3& x : s.points) {
-    EXPECT_NEAR(walls[0].cylinder.distance(x), 0.0, 1e-12);
+    EXPECT_NEAR(walls[0].get<CylinderWall>().cylinder.distance(x), 0.0, 1e-12);
     lo = std::min(lo, x.y()), hi = std::max(hi, x.y());
   }
   for (std::size_t k = 0; k < s.polygons.size(); ++k) {
@@ -66,7 +65,7 @@ TEST(WallSurfaces, CylinderIsATubeAcrossTheBox) {
     area += a.norm();
     Vec3 centre = Vec3::Zero();
     for (const std::uint32_t i : s.polygons[k]) centre += s.points[i] / 4.0;
-    EXPECT_GT(a.dot(walls[0].cylinder.outwardNormal(centre)), 0.0) << "quad " << k;
+    EXPECT_GT(a.dot(walls[0].get<CylinderWall>().cylinder.outwardNormal(centre)), 0.0) << "quad " << k;
   }
   EXPECT_NEAR(lo, 0.0, 1e-12);
   EXPECT_NEAR(hi, 2.0, 1e-12);
@@ -78,10 +77,10 @@ TEST(WallSurfaces, CylinderIsATubeAcrossTheBox) {
 // its two end discs, each a 48-gon facing out along the axis with the polygon's area.
 TEST(WallSurfaces, FlatEndsAreDiscs) {
   std::vector<Wall> walls(1);
-  walls[0].shape = WallShape::Cylinder;
-  walls[0].cylinder = Cylinder{Vec3(0.5, 1.0, 2.0), Vec3::UnitY(), 0.25};
-  walls[0].cylinder.halfLength = 0.5;
-  walls[0].cylinder.flatEnds = true;
+  Cylinder roller{Vec3(0.5, 1.0, 2.0), Vec3::UnitY(), 0.25};
+  roller.halfLength = 0.5;
+  roller.flatEnds = true;
+  walls[0].surface = CylinderWall{roller};
   const WallSurfaces s = wallSurfaces(walls, {}, unitBox(), 48);
   ASSERT_EQ(s.polygons.size(), 50u);
   const double polygon = 0.5 * 48 * 0.25 * 0.25 * std::sin(2.0 * std::numbers::pi / 48);

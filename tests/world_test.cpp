@@ -108,7 +108,7 @@ TEST(World, DampedSphereWallImpactReproducesRestitution) {
     const Material m{1e8, 0.25, 2500.0, 0.0, e};
     World world({Superquadric::sphere(1e-3)}, {m}, bigBox(), 1e-4);
     world.setContactModel(0, 0, world.defaultContactModel(0, 0));
-    world.addWall(Wall{.plane = Plane{Vec3::Zero(), Vec3::UnitZ()}});
+    world.addWall(Wall{.surface = PlaneWall{Plane{Vec3::Zero(), Vec3::UnitZ()}}});
     world.addParticle(0, 0, Vec3(0.0, 0.0, 1.05e-3), Quat::Identity());
     world.particles().velocity[0] = Vec3(0.0, 0.0, -1.0);
     world.setTimeStep(2e-8);
@@ -138,7 +138,7 @@ Impact adhesiveImpact(double youngs, double surfaceEnergy) {
   ContactModel law = world.defaultContactModel(0, 0);
   law.normal = HaervigJkrLaw{surfaceEnergy, surfaceEnergy};
   world.setContactModel(0, 0, law);
-  world.addWall(Wall{.plane = Plane{Vec3::Zero(), Vec3::UnitZ()}});
+  world.addWall(Wall{.surface = PlaneWall{Plane{Vec3::Zero(), Vec3::UnitZ()}}});
   world.addParticle(0, 0, Vec3(0.0, 0.0, 1.0001 * R), Quat::Identity());
   world.particles().velocity[0] = Vec3(0.0, 0.0, -v0);
   const double m = world.particles().mass[0];
@@ -178,7 +178,7 @@ TEST(World, ElasticImpactLastsTheHertzCollisionTime) {
   World world({Superquadric::sphere(R)}, {Material{1e8, 0.25, 2500.0, 0.0, 1.0}}, bigBox(), 1e-4);
   const ContactModel law = world.defaultContactModel(0, 0);
   world.setContactModel(0, 0, law);
-  world.addWall(Wall{.plane = Plane{Vec3::Zero(), Vec3::UnitZ()}});
+  world.addWall(Wall{.surface = PlaneWall{Plane{Vec3::Zero(), Vec3::UnitZ()}}});
   world.addParticle(0, 0, Vec3(0.0, 0.0, 1.0001 * R), Quat::Identity());
   world.particles().velocity[0] = Vec3(0.0, 0.0, -v0);
   const double expected = hertzCollisionTime(world.particles().mass[0], R, law.effectiveModulus, v0);
@@ -211,7 +211,7 @@ TEST(World, BeckerKamlahSphereImpactFollowsThorntonRestitution) {
     ContactModel law = world.defaultContactModel(0, 0);
     law.normal = BeckerKamlahLaw{{.yieldStrength = Y, .transition = false}};
     world.setContactModel(0, 0, law);
-    world.addWall(Wall{.plane = Plane{Vec3::Zero(), Vec3::UnitZ()}});
+    world.addWall(Wall{.surface = PlaneWall{Plane{Vec3::Zero(), Vec3::UnitZ()}}});
     world.addParticle(0, 0, Vec3(0.0, 0.0, 1.00001 * R), Quat::Identity());
     world.particles().velocity[0] = Vec3(0.0, 0.0, -speed);
     world.setTimeStep(hertzCollisionTime(world.particles().mass[0], R, law.effectiveModulus, speed) / 4000.0);
@@ -251,7 +251,7 @@ TEST(World, RollingResistanceHoldsBelowTheYieldForceAndRollsAbove) {
     law.normal = HaervigJkrLaw{gamma, gamma};
     law.rolling = HaervigRollingResistance{hysteresis, law.effectiveModulus};
     world.setContactModel(0, 0, law);
-    world.addWall(Wall{.plane = Plane{Vec3::Zero(), Vec3::UnitZ()}});
+    world.addWall(Wall{.surface = PlaneWall{Plane{Vec3::Zero(), Vec3::UnitZ()}}});
     world.addParticle(0, 0, Vec3(0.0, 0.0, R - 1e-9), Quat::Identity());
     world.setTimeStep(5e-9);
     for (int step = 0; step < 20000; ++step) world.step();  // adhesive equilibrium
@@ -284,7 +284,7 @@ TEST(World, RoughSphereRestsOnItsAsperities) {
   ContactModel law = world.defaultContactModel(0, 0);
   law.normal = GreenwoodWilliamsonLaw{{.asperityCount = asperities, .sigma = sigma}};
   world.setContactModel(0, 0, law);
-  world.addWall(Wall{.plane = Plane{Vec3::Zero(), Vec3::UnitZ()}});
+  world.addWall(Wall{.surface = PlaneWall{Plane{Vec3::Zero(), Vec3::UnitZ()}}});
   world.addParticle(0, 0, Vec3(0.0, 0.0, R + 3.5 * sigma), Quat::Identity());
   world.setGravity(Vec3(0.0, 0.0, -g));
   world.setTimeStep(1e-6);

@@ -36,7 +36,7 @@ std::vector<ContactEllipse> Interactions::ellipses(const InteractionScene& scene
       if (group.kind == PairKind::ParticleCylinder) {
         // The roller's curvatures depend on which part of it touches (its barrel, a rounded end,
         // a flat end or its rim): its detector gives them, warm from the stored answer.
-        Cylinder image = scene.walls[b & ~wallFlag].cylinder;
+        Cylinder image = scene.walls[b & ~wallFlag].get<CylinderWall>().cylinder;
         image.point += store_.wallImage[k];
         const WarmStart warm{store_.localA[k], store_.localB[k], store_.overlap[k]};
         g = detectContact(A, poseA, image, {.cutoff = scene.skin, .tolerance = scene.detector.tolerance, .curvatures = true}, &warm);

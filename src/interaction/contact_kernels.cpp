@@ -36,7 +36,7 @@ template <PairKind Kind>
   const std::uint32_t a = s.a[k], b = s.b[k];
   const double rA = p.boundingRadius[a], cutoff = std::min(scene.skin, range);
   if constexpr (withWall(Kind)) {
-    return detectSphereWall(p.position[a], rA, scene.walls[b & ~wallFlag].plane, cutoff);
+    return detectSphereWall(p.position[a], rA, scene.walls[b & ~wallFlag].get<PlaneWall>().plane, cutoff);
   } else {
     const double rB = p.boundingRadius[b], reach = rA + rB + cutoff;
     if ((p.position[b] - p.position[a]).squaredNorm() > reach * reach) return RoundContact{};
@@ -63,14 +63,15 @@ ContactGeometry detect(const InteractionScene& scene, const std::vector<double>&
     const WarmStart* touched = s.status[k] == ContactStatus::Converged && scene.detector.warmStart ? &warm : nullptr;
     const Wall& wall = scene.walls[b & ~wallFlag];
     if constexpr (Kind == PairKind::ParticleCylinder) {
-      Cylinder image = wall.cylinder;  // the image nearest A (a periodic box)
+      Cylinder image = wall.get<CylinderWall>().cylinder;  // the image nearest A (a periodic box)
       image.point += s.wallImage[k];
       return detectContact(A, poseOf(p, a), image, settings, touched);
     } else {
-      return detectContact(A, poseOf(p, a), scene.meshes[wall.mesh], wall.meshPose(), s.feature[k], settings, touched);
+      const MeshWall& mesh = wall.get<MeshWall>();
+      return detectContact(A, poseOf(p, a), scene.meshes[mesh.mesh], mesh.pose(), s.feature[k], settings, touched);
     }
   } else if constexpr (withWall(Kind)) {
-    return detectContact(A, poseOf(p, a), scene.walls[b & ~wallFlag].plane, settings);
+    return detectContact(A, poseOf(p, a), scene.walls[b & ~wallFlag].get<PlaneWall>().plane, settings);
   } else {
     // A pair found separated stays so until the particles could have moved by its gap.
     if (s.separation[k] > 0.0) {

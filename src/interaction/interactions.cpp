@@ -20,7 +20,7 @@ std::uint32_t modelIndex(const InteractionScene& scene, const ContactStore& s, s
 
 PairKind kindOf(const InteractionScene& scene, const ContactStore& s, std::size_t k) {
   const Superquadric& A = scene.shapes[scene.particles.shape[s.a[k]]];
-  return s.onWall(k) ? wallPairKind(A, scene.walls[s.b[k] & ~wallFlag].shape) : pairKind(A, scene.shapes[scene.particles.shape[s.b[k]]]);
+  return s.onWall(k) ? wallPairKind(A, scene.walls[s.b[k] & ~wallFlag]) : pairKind(A, scene.shapes[scene.particles.shape[s.b[k]]]);
 }
 
 }  // namespace
@@ -30,7 +30,7 @@ ContactStore emptyStore(const InteractionScene& scene) {
   // Round contacts (pair_kind.hpp) compute no curvatures: spheres with planes alone need no cache.
   const bool anyNonRound =
       std::any_of(scene.shapes.begin(), scene.shapes.end(), [](const Superquadric& shape) { return !shape.isSphere(); }) ||
-      std::any_of(scene.walls.begin(), scene.walls.end(), [](const Wall& w) { return w.shape != WallShape::Plane; });
+      std::any_of(scene.walls.begin(), scene.walls.end(), [](const Wall& w) { return !w.is<PlaneWall>(); });
   s.withEnergy = scene.energy;
   for (const ContactModel& m : scene.models) {
     s.withRolling = s.withRolling || m.rolling.has_value();

@@ -203,7 +203,8 @@ template <int W, bool OnWall>
     l.rA[j] = p.boundingRadius[a], l.mA[j] = p.mass[a];
     if constexpr (OnWall) {
       const Wall& wall = scene.walls[b & ~wallFlag];
-      put(l.xB, j, wall.plane.point), put(l.vB, j, wall.velocity), put(l.wallNormal, j, wall.plane.normal);
+      const Plane& plane = wall.get<PlaneWall>().plane;
+      put(l.xB, j, plane.point), put(l.vB, j, wall.velocity), put(l.wallNormal, j, plane.normal);
     } else {
       put(l.xB, j, p.position[b]), put(l.vB, j, p.velocity[b]), put(l.wB, j, p.angularVelocity[b]);
       l.rB[j] = p.boundingRadius[b], l.mB[j] = p.mass[b];

@@ -10,7 +10,7 @@ namespace {
 /// A plane wall along a coordinate axis: it has a pressure column (its normal force over the
 /// box's cross-section, World::wallArea).
 bool alongAnAxis(const Wall& w) {
-  return w.shape == WallShape::Plane && w.plane.normal.cwiseAbs().maxCoeff() == 1.0;
+  return w.is<PlaneWall>() && w.get<PlaneWall>().plane.normal.cwiseAbs().maxCoeff() == 1.0;
 }
 
 }  // namespace
@@ -29,10 +29,10 @@ RunLog::RunLog(const std::filesystem::path& path, const World& world, std::optio
   const std::vector<Wall>& walls = world.walls();
   for (std::size_t w = 0; w < walls.size(); ++w) {
     const std::string name = ",wall" + std::to_string(w);
-    if (walls[w].shape != WallShape::Plane) out_ << name << "_x_m" << name << "_y_m";
+    if (!walls[w].is<PlaneWall>()) out_ << name << "_x_m" << name << "_y_m";
     out_ << name << "_z_m" << name << "_fx_N" << name << "_fy_N" << name << "_fz_N";
     if (alongAnAxis(walls[w])) out_ << name << "_p_Pa";
-    if (walls[w].shape != WallShape::Plane) out_ << name << "_tx_Nm" << name << "_ty_Nm" << name << "_tz_Nm";
+    if (!walls[w].is<PlaneWall>()) out_ << name << "_tx_Nm" << name << "_ty_Nm" << name << "_tz_Nm";
   }
   out_ << ",yielded_fraction,largest_overlap_ratio";
   if (plate_) out_ << ",plate_gap_m,plate_pressure_Pa,porosity";
@@ -53,10 +53,10 @@ std::optional<PlateMeasures> RunLog::row(const World& world, long step, const st
   for (std::size_t k = 0; k < world.walls().size(); ++k) {
     const Wall& w = world.walls()[k];
     const Vec3& x = w.reference();
-    if (w.shape != WallShape::Plane) out_ << ',' << x.x() << ',' << x.y();
+    if (!w.is<PlaneWall>()) out_ << ',' << x.x() << ',' << x.y();
     out_ << ',' << x.z() << ',' << w.force.x() << ',' << w.force.y() << ',' << w.force.z();
-    if (alongAnAxis(w)) out_ << ',' << -w.force.dot(w.plane.normal) / world.wallArea(k);
-    if (w.shape != WallShape::Plane) out_ << ',' << w.torque.x() << ',' << w.torque.y() << ',' << w.torque.z();
+    if (alongAnAxis(w)) out_ << ',' << -w.force.dot(w.get<PlaneWall>().plane.normal) / world.wallArea(k);
+    if (!w.is<PlaneWall>()) out_ << ',' << w.torque.x() << ',' << w.torque.y() << ',' << w.torque.z();
   }
   out_ << ',' << m.yieldedFraction << ',' << m.largestOverlapRatio;
   std::optional<PlateMeasures> plate;

@@ -99,11 +99,10 @@ WallSurfaces wallSurfaces(const std::vector<Wall>& walls, const std::vector<Mesh
                           int segments) {
   WallSurfaces s;
   for (std::uint32_t w = 0; w < walls.size(); ++w) {
-    switch (walls[w].shape) {
-      case WallShape::Plane: addPlane(s, walls[w].plane, w, box); break;
-      case WallShape::Cylinder: addCylinder(s, walls[w].cylinder, w, box, segments); break;
-      case WallShape::Mesh: addMesh(s, meshes[walls[w].mesh].mesh(), walls[w].meshPose(), w); break;
-    }
+    std::visit(PerShape{[&](const PlaneWall& p) { addPlane(s, p.plane, w, box); },
+                        [&](const CylinderWall& c) { addCylinder(s, c.cylinder, w, box, segments); },
+                        [&](const MeshWall& m) { addMesh(s, meshes[m.mesh].mesh(), m.pose(), w); }},
+               walls[w].surface);
   }
   return s;
 }

@@ -81,8 +81,10 @@ World buildWorld(const Scene& scene) {
   for (const WallSpec& w : scene.walls) meshTrees.push_back(w.mesh ? std::optional(MeshTree(w.mesh->mesh())) : std::nullopt);
   const auto clearOfWalls = [&](const Vec3& x, double r) {
     for (std::size_t w = 0; w < scene.walls.size(); ++w) {
-      const bool clear = meshTrees[w] ? meshTrees[w]->trianglesNear(x - scene.walls[w].point, r).empty()
-                                      : scene.walls[w].wall().distance(x) > r;
+      // (a mesh wall starts unturned: its body frame is the world's, shifted to its origin)
+      const bool clear = std::visit(PerShape{[&](const MeshWall& m) { return meshTrees[w]->trianglesNear(x - m.origin, r).empty(); },
+                                             [&](const auto& surface) { return surface.distance(x) > r; }},
+                                    scene.walls[w].wall.surface);
       if (!clear) return false;
     }
     return true;
@@ -169,8 +171,9 @@ World buildWorld(const Scene& scene) {
   // A cylinder acts through its image nearest each particle: the images' spacing normal to the
   // axis must exceed what one particle can reach of two of them.
   for (std::size_t k = 0; k < scene.walls.size(); ++k) {
-    const WallSpec& w = scene.walls[k];
-    if (w.shape != WallShape::Cylinder) continue;
+    const CylinderWall* roller = scene.walls[k].wall.as<CylinderWall>();
+    if (roller == nullptr) continue;
+    const Cylinder& w = roller->cylinder;
     for (int d = 0; d < 3; ++d) {
       const double spacing = scene.domain.length()(d) * Vec3::Unit(d).cross(w.axis).norm();
       const double reach = 2.0 * (w.radius + largest + skin);
@@ -214,8 +217,8 @@ World buildWorld(const Scene& scene) {
     }
   }
   for (const WallSpec& spec : scene.walls) {
-    Wall w = spec.wall();
-    if (spec.mesh) w.mesh = world.addMesh(*spec.mesh);
+    Wall w = spec.wall;
+    if (spec.mesh) std::get<MeshWall>(w.surface).mesh = world.addMesh(*spec.mesh);
     world.addWall(w);
   }
   for (std::size_t i = 0; i < shapes.size(); ++i) {

@@ -15,6 +15,9 @@ struct SceneHasher {
   void operator()(std::uint64_t v) { f(v); }
   void operator()(const std::string& s) { f(s); }
   void operator()(const Vec3& v) { f(v.x())(v.y())(v.z()); }
+  void operator()(const Quat& q) { f(q.w())(q.x())(q.y())(q.z()); }
+  void operator()(bool b) { f(n(b)); }
+  void operator()(std::uint32_t i) { f(n(i)); }
   template <typename... T>
   void all(const T&... values) { ((*this)(values), ...); }
   /// Integers, enums and flags as one 64-bit value each.
@@ -60,8 +63,8 @@ SceneFingerprint sceneFingerprint(const Scene& scene) {
   }
   next();
   for (const WallSpec& w : scene.walls) {
-    h.all(h.n(static_cast<std::uint32_t>(w.shape)), w.point, w.normal, w.axis, w.radius, w.length, h.n(w.flatEnds), w.angularVelocity, w.velocity,
-          h.n(w.material));
+    h.all(h.n(static_cast<std::uint32_t>(w.wall.surface.index())), w.wall.velocity, w.wall.angularVelocity, h.n(w.wall.material));
+    std::visit([&](const auto& surface) { surface.fields([&](const auto&... field) { h.all(field...); }); }, w.wall.surface);
     if (!w.mesh) continue;
     for (const Vec3& v : w.mesh->mesh().vertices) h(v);  // the mesh as read, repaired and scaled
     for (const auto& t : w.mesh->mesh().triangles) h.all(h.n(t[0]), h.n(t[1]), h.n(t[2]));

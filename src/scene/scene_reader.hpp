@@ -109,9 +109,8 @@ class Reader {
   /// The required key "wall": the index of a plane (pressures and paths along a normal).
   std::size_t plane(const YAML::Node& map, const std::string& where, const std::vector<WallSpec>& walls) const {
     const std::size_t w = wallIndex(map, where, walls.size());
-    if (walls[w].shape != WallShape::Plane) {
-      const char* shape = walls[w].shape == WallShape::Cylinder ? "a cylinder" : "a mesh";
-      fail(map["wall"], keyPath(where, "wall"), "walls[" + std::to_string(w) + "] is " + shape + "; this needs a plane");
+    if (!walls[w].wall.is<PlaneWall>()) {
+      fail(map["wall"], keyPath(where, "wall"), "walls[" + std::to_string(w) + "] is " + walls[w].wall.kind() + "; this needs a plane");
     }
     return w;
   }
@@ -119,10 +118,10 @@ class Reader {
   /// a plane facing -z, in a scene with a plane facing +z.
   std::size_t plate(const YAML::Node& map, const std::string& where, const std::vector<WallSpec>& walls) const {
     const std::size_t w = plane(map, where, walls);
-    if (!(walls[w].normal.z() < -0.999)) {
+    if (!walls[w].wall.get<PlaneWall>().facesDown()) {
       fail(map["wall"], keyPath(where, "wall"), "the pressing plate must be a plane facing -z (normal [0, 0, -1])");
     }
-    if (std::ranges::none_of(walls, [](const WallSpec& s) { return s.shape == WallShape::Plane && s.normal.z() > 0.999; })) {
+    if (std::ranges::none_of(walls, [](const WallSpec& s) { return s.wall.is<PlaneWall>() && s.wall.get<PlaneWall>().facesUp(); })) {
       fail(map["wall"], keyPath(where, "wall"), "needs a floor to press against: a plane wall facing +z");
     }
     return w;

@@ -104,7 +104,7 @@ void StageRunner::start() {
 
 void StageRunner::enterStage() {
   const StageSpec& stage = scene_.stages[stage_];
-  for (std::size_t w = 0; w < world_.walls().size(); ++w) world_.walls()[w].velocity = scene_.walls[w].velocity;
+  for (std::size_t w = 0; w < world_.walls().size(); ++w) world_.walls()[w].velocity = scene_.walls[w].wall.velocity;
   if (stage.wall) world_.walls()[*stage.wall].velocity = stage.wallVelocity;
   for (Wall& w : world_.walls()) w.servo.reset();
   if (stage.servoWall) world_.walls()[*stage.servoWall].servo = stage.servo;
@@ -125,7 +125,7 @@ std::string StageRunner::stepStage(RunObserver& observer, const volatile std::si
   if (!stage.wallPath.points.empty()) {  // the velocity that lands the wall on its path at the step's end
     Wall& w = world_.walls()[*stage.wall];
     const double t = world_.time() - stageStart_;
-    w.velocity = (stage.wallPath.offset(t + dt) - stage.wallPath.offset(t)) / dt * w.plane.normal;
+    w.velocity = (stage.wallPath.offset(t + dt) - stage.wallPath.offset(t)) / dt * w.get<PlaneWall>().plane.normal;
   }
   world_.step();
   ++report_.totalSteps;

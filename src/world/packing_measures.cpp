@@ -33,9 +33,9 @@ std::vector<int> coordinationNumbers(const World& world) {
   return z;
 }
 
-const Wall* floorWall(const World& world) {
+const PlaneWall* floorWall(const World& world) {
   for (const Wall& w : world.walls()) {
-    if (w.shape == WallShape::Plane && w.plane.normal.z() > 0.999) return &w;
+    if (const PlaneWall* plane = w.as<PlaneWall>(); plane != nullptr && plane->facesUp()) return plane;
   }
   return nullptr;
 }
@@ -48,14 +48,14 @@ double solidVolume(const World& world) {
 }
 
 PlateMeasures measurePlate(const World& world, std::size_t plate) {
-  const Wall* floor = floorWall(world);
-  if (plate >= world.walls().size() || world.walls()[plate].shape != WallShape::Plane ||
-      !(world.walls()[plate].plane.normal.z() < -0.999) || floor == nullptr) {
+  const PlaneWall* floor = floorWall(world);
+  const PlaneWall* top = plate < world.walls().size() ? world.walls()[plate].as<PlaneWall>() : nullptr;
+  if (top == nullptr || !top->facesDown() || floor == nullptr) {
     throw std::invalid_argument("walls[" + std::to_string(plate) + "] is not a plate: a plate is a plane wall facing -z "
                                 "(normal [0, 0, -1]) in a scene with a floor, a plane wall facing +z");
   }
   PlateMeasures m;
-  m.gap = world.walls()[plate].plane.point.z() - floor->plane.point.z();
+  m.gap = top->plane.point.z() - floor->plane.point.z();
   m.pressure = world.wallPressure(plate);
   m.porosity = 1.0 - solidVolume(world) / (world.wallArea(plate) * m.gap);
   return m;
@@ -95,12 +95,12 @@ PackingMeasures measurePacking(const World& world) {
   m.slabHeight = hi - lo;
   m.solidFraction = ranks.sum(volume) / (d.length().x() * d.length().y() * m.slabHeight);
 
-  const Wall* floor = nullptr;
-  const Wall* ceiling = nullptr;
+  const PlaneWall* floor = nullptr;
+  const PlaneWall* ceiling = nullptr;
   for (const Wall& w : world.walls()) {
-    if (w.shape != WallShape::Plane) continue;
-    if (w.plane.normal.z() > 0.999) floor = &w;
-    if (w.plane.normal.z() < -0.999) ceiling = &w;
+    const PlaneWall* plane = w.as<PlaneWall>();
+    if (plane != nullptr && plane->facesUp()) floor = plane;
+    if (plane != nullptr && plane->facesDown()) ceiling = plane;
   }
   const double base = d.length().x() * d.length().y();
   m.stressVolume = base * equivalentHeight;

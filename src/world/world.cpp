@@ -119,15 +119,17 @@ void World::buildCandidates() {
     for (std::uint32_t w = 0; w < walls_.size(); ++w) {
       // A cylinder across a periodic direction acts through its image nearest the particle
       // (the contact's wall image); planes are parallel to the periodic directions.
-      const Wall& wall = walls_[w];
       const double reach = p.boundingRadius[i] + range + skin;
-      if (wall.shape == WallShape::Mesh) {
-        addMeshCandidates(i, w, reach, next);
-        continue;
-      }
-      const Vec3 r = p.position[i] - wall.reference();
-      const Vec3 shift = wall.shape == WallShape::Cylinder ? Vec3(r - domain_.minimumImage(r)) : Vec3::Zero();
-      if (wall.distance(p.position[i] - shift) < reach) next.push_back({i, wallFlag | w, shift});
+      std::visit(PerShape{[&](const PlaneWall& plane) {
+                            if (plane.distance(p.position[i]) < reach) next.push_back({i, wallFlag | w});
+                          },
+                          [&](const CylinderWall& cylinder) {
+                            const Vec3 r = p.position[i] - cylinder.reference();
+                            const Vec3 shift = r - domain_.minimumImage(r);
+                            if (cylinder.distance(p.position[i] - shift) < reach) next.push_back({i, wallFlag | w, shift});
+                          },
+                          [&](const MeshWall& mesh) { addMeshCandidates(i, w, mesh, reach, next); }},
+                 walls_[w].surface);
     }
   }
   interactions_.setCandidates(next, interactionScene(), ghosts_.localOwners());
@@ -136,11 +138,11 @@ void World::buildCandidates() {
   for (const Wall& w : walls_) wallReference_.push_back(w.reference());
 }
 
-void World::addMeshCandidates(std::uint32_t i, std::uint32_t w, double reach, std::vector<CandidateKey>& next) const {
-  const Wall& wall = walls_[w];
+void World::addMeshCandidates(std::uint32_t i, std::uint32_t w, const MeshWall& wall, double reach,
+                              std::vector<CandidateKey>& next) const {
   const MeshFeatures& mesh = meshes_[wall.mesh];
   std::vector<std::uint32_t> features;
-  for (std::uint32_t t : meshTrees_[wall.mesh].trianglesNear(wall.meshPose().toBody(particles_.position[i]), reach)) {
+  for (std::uint32_t t : meshTrees_[wall.mesh].trianglesNear(wall.pose().toBody(particles_.position[i]), reach)) {
     features.push_back(t);
     for (int c = 0; c < 3; ++c) {
       const std::uint32_t e = mesh.faceEdges(t)[c], v = mesh.mesh().triangles[t][c];
@@ -339,7 +341,7 @@ void World::step() {
     team.master([&] {
       for (std::size_t k = 0; k < walls_.size(); ++k) {
         Wall& w = walls_[k];
-        if (w.servo) w.velocity = servoVelocity(k) * w.plane.normal;
+        if (w.servo) w.velocity = servoVelocity(k) * w.get<PlaneWall>().plane.normal;
         w.advance(h);
       }
       time_ += h;
@@ -399,22 +401,28 @@ void World::setSimdPath(SimdPath path) {
   simd_ = path;
 }
 
+const Vec3& World::planeNormal(std::size_t w) const {
+  const PlaneWall* plane = walls_.at(w).as<PlaneWall>();
+  if (plane == nullptr) throw std::invalid_argument("World: wall " + std::to_string(w) + " is " + walls_[w].kind() + ", not a plane");
+  return plane->plane.normal;
+}
+
 double World::wallArea(std::size_t w) const {
   int axis;
-  walls_.at(w).plane.normal.cwiseAbs().maxCoeff(&axis);
+  planeNormal(w).cwiseAbs().maxCoeff(&axis);
   const Vec3 L = domain_.length();
   return L.prod() / L(axis);
 }
 
 double World::wallPressure(std::size_t w) const {
   const Wall& wall = walls_.at(w);
-  return std::abs(wall.force.dot(wall.plane.normal)) / wallArea(w);
+  return std::abs(wall.force.dot(planeNormal(w))) / wallArea(w);
 }
 
 double World::servoVelocity(std::size_t w) const {
   const Wall& wall = walls_[w];
   const double target = wall.servo->pressure * wallArea(w);
-  const double error = target - std::abs(wall.elasticForce.dot(wall.plane.normal));  // N
+  const double error = target - std::abs(wall.elasticForce.dot(planeNormal(w)));  // N
   double speed = wall.servo->maxSpeed * std::clamp(error / target, -1.0, 1.0);
   if (wall.stiffness > 0.0) {
     const double limit = std::abs(error) / (2.0 * wall.stiffness * dt_);

@@ -20,7 +20,7 @@ namespace {
 
 /// The payload's version: raised whenever writeState (or the run checkpoint around it) writes other
 /// records or in another order.
-constexpr std::uint64_t stateVersion = 16;
+constexpr std::uint64_t stateVersion = 17;
 
 /// Checks what the engine will follow in a whole state of n particles and `walls` walls (every
 /// rank reads the same, so every rank throws alike).
@@ -39,9 +39,8 @@ void requireWholeIntact(const WholeState& whole, std::size_t walls, const std::v
                   "contact body B");
     requireIntact(static_cast<unsigned>(s.status[k]) <= static_cast<unsigned>(ContactStatus::Degenerate), "contact status");
     const Wall* wall = s.onWall(k) ? &wallRecords[s.idB[k] & ~wallFlag] : nullptr;
-    const bool onMesh = wall != nullptr && wall->shape == WallShape::Mesh;
-    requireIntact(onMesh ? wall->mesh < meshes.size() && s.feature[k] < meshes[wall->mesh].featureCount() : s.feature[k] == 0,
-                  "mesh feature");
+    const MeshWall* mesh = wall != nullptr ? wall->as<MeshWall>() : nullptr;
+    requireIntact(mesh != nullptr ? s.feature[k] < meshes[mesh->mesh].featureCount() : s.feature[k] == 0, "mesh feature");
     requireIntact(k == 0 || s.key(k - 1) < s.key(k), "contact keys");
   }
 }
@@ -144,9 +143,11 @@ void World::readState(CheckpointReader& in) {
   }
   for (const Wall& w : wallRecords) {
     requireIntact(w.material < materials_.size(), "wall material index");
-    requireIntact(w.shape == WallShape::Plane || w.shape == WallShape::Cylinder || w.shape == WallShape::Mesh, "wall shape");
-    requireIntact(w.shape != WallShape::Mesh || w.mesh < meshes_.size(), "wall mesh index");
-    requireIntact(std::abs(w.orientation.squaredNorm() - 1.0) < 1e-9, "wall orientation");
+    requireIntact(w.surface.index() < std::variant_size_v<WallSurface>, "wall shape");  // before any visit
+    if (const MeshWall* mesh = w.as<MeshWall>()) {
+      requireIntact(mesh->mesh < meshes_.size(), "wall mesh index");
+      requireIntact(std::abs(mesh->orientation.squaredNorm() - 1.0) < 1e-9, "wall orientation");
+    }
   }
   requireWholeIntact(whole, walls, meshes_, wallRecords);
   requireIntact(wallReference.empty() || wallReference.size() == walls, "wall reference points");

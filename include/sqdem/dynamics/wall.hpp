@@ -1,16 +1,18 @@
 #pragma once
-// A wall: a kinematic body (docs/architecture.md, "Layers") whose surface is an infinite plane, the outside of a
-// cylinder (a roller) or a triangle mesh (an STL file: mesh_features.hpp, held by the World),
-// moved with a prescribed velocity or, a plane, under servo control; a cylinder may also spin
-// about its axis and a mesh rotate about its origin. The particles' forces and torques on it
-// are summed in the interaction layer's reduction.
+// A wall: a kinematic body (docs/architecture.md, "Layers") whose surface is one of the wall
+// shapes (WallSurface: an infinite plane, the outside of a cylinder, a triangle mesh), moved with
+// a prescribed velocity or, a plane, under servo control; a cylinder may also spin about its axis
+// and a mesh rotate about its origin. The particles' forces and torques on it are summed in the
+// interaction layer's reduction.
 
+#include <concepts>
 #include <cstdint>
 #include <optional>
+#include <variant>
 
-#include "sqdem/geometry/cylinder.hpp"
-#include "sqdem/geometry/plane.hpp"
-#include "sqdem/geometry/pose.hpp"
+#include "sqdem/dynamics/cylinder_wall.hpp"
+#include "sqdem/dynamics/mesh_wall.hpp"
+#include "sqdem/dynamics/plane_wall.hpp"
 #include "sqdem/math/types.hpp"
 
 namespace sqdem {
@@ -29,58 +31,72 @@ struct WallServo {
   double maxSpeed = 0.0;  ///< (m/s), > 0
 };
 
-/// What a wall's surface is.
-enum class WallShape : std::uint8_t {
-  Plane,     ///< `plane`
-  Cylinder,  ///< the outside of `cylinder`
-  Mesh,      ///< the World's mesh `mesh`, its body frame at `origin` turned by `orientation`
+/// What a wall's surface must give: its kind for messages, its fields, the point its motion and
+/// torque refer to, the velocity of its surface at x, and its motion over a step h.
+template <class S>
+concept WallSurfaceType = requires(S s, const S c, double h, const Vec3& x) {
+  { S::kind } -> std::convertible_to<const char*>;
+  { c.reference() } -> std::same_as<const Vec3&>;
+  c.fields([](const auto&...) {});
+  { c.surfaceVelocity(x, x, x) } -> std::convertible_to<Vec3>;
+  s.advance(h, x, x);
 };
+
+/// The wall shapes: the one list of them. Each is its own type (plane_wall.hpp, ...); what a
+/// layer does with a wall it does by visiting this variant, so the compiler names every place a
+/// new shape must be handled.
+using WallSurface = std::variant<PlaneWall, CylinderWall, MeshWall>;
+
+/// One callable per wall shape, for std::visit on a WallSurface (a shape without one does not
+/// compile).
+template <class... F>
+struct PerShape : F... {
+  using F::operator()...;
+};
+template <class... F>
+PerShape(F...) -> PerShape<F...>;
+
+template <class... S>
+constexpr bool allWallSurfaces(std::variant<S...>*) { return (WallSurfaceType<S> && ...); }
+static_assert(allWallSurfaces(static_cast<WallSurface*>(nullptr)));
 
 /// A wall moving with a prescribed velocity or under servo control; `force` and `torque` are
 /// what the particles exert on it.
 struct Wall {
-  Plane plane;                   ///< the surface of a Plane wall
+  WallSurface surface;
   Vec3 velocity = Vec3::Zero();  ///< of its reference point (m/s)
   std::uint32_t material = 0;
   Vec3 force = Vec3::Zero();     ///< (N), from the last force computation
   Vec3 elasticForce = Vec3::Zero();  ///< the same without the contacts' normal damping (N)
   double stiffness = 0.0;        ///< sum of its contacts' normal stiffnesses S_n (N/m)
   std::optional<WallServo> servo;  ///< planes only
-  WallShape shape = WallShape::Plane;
-  Cylinder cylinder;             ///< the surface of a Cylinder wall
   /// About its reference point (rad/s): along a cylinder's axis (its spin), any for a mesh,
   /// zero for a plane.
   Vec3 angularVelocity = Vec3::Zero();
   Vec3 torque = Vec3::Zero();    ///< about its reference point (N m), from the last force computation
-  std::uint32_t mesh = 0;        ///< a Mesh wall's index among the World's meshes
-  Vec3 origin = Vec3::Zero();    ///< a Mesh wall's body-frame origin in the world (m)
-  Quat orientation = Quat::Identity();  ///< a Mesh wall's body frame to the world
 
-  /// The point its motion and torque refer to: the plane's point, the cylinder's axis point, or
-  /// the mesh's origin.
-  const Vec3& reference() const {
-    return shape == WallShape::Plane ? plane.point : shape == WallShape::Cylinder ? cylinder.point : origin;
-  }
-  /// Where a Mesh wall's body frame is.
-  Pose meshPose() const { return {origin, orientation}; }
+  template <WallSurfaceType S>
+  bool is() const { return std::holds_alternative<S>(surface); }
+  /// Its surface if it is an S, else null.
+  template <WallSurfaceType S>
+  const S* as() const { return std::get_if<S>(&surface); }
+  template <WallSurfaceType S>
+  S* as() { return std::get_if<S>(&surface); }
+  /// Its surface, known to be an S (as a kernel chosen by the wall's kind knows it).
+  template <WallSurfaceType S>
+  const S& get() const { return *std::get_if<S>(&surface); }
+  template <WallSurfaceType S>
+  S& get() { return *std::get_if<S>(&surface); }
+  const char* kind() const { return std::visit([](const auto& s) { return s.kind; }, surface); }
+  /// The point its motion and torque refer to.
+  const Vec3& reference() const { return std::visit([](const auto& s) -> const Vec3& { return s.reference(); }, surface); }
   /// Velocity of its surface at x (m/s): translation and rotation.
   Vec3 surfaceVelocity(const Vec3& x) const {
-    return shape == WallShape::Plane ? velocity : Vec3(velocity + angularVelocity.cross(x - reference()));
+    return std::visit([&](const auto& s) { return Vec3(s.surfaceVelocity(x, velocity, angularVelocity)); }, surface);
   }
-  /// Signed distance of x from a plane's or a cylinder's surface, > 0 on the particles' side (m).
-  double distance(const Vec3& x) const {
-    return shape == WallShape::Plane ? (x - plane.point).dot(plane.normal) : cylinder.distance(x);
-  }
-  /// Moves it over a step h: translation, and a mesh's rotation exp(omega h) about its origin
-  /// (a cylinder's spin leaves its surface where it is).
+  /// Moves it over a step h.
   void advance(double h) {
-    if (shape == WallShape::Plane) plane.point += h * velocity;
-    else if (shape == WallShape::Cylinder) cylinder.point += h * velocity;
-    else {
-      origin += h * velocity;
-      const double angle = angularVelocity.norm() * h;
-      if (angle > 0.0) orientation = (Quat(Eigen::AngleAxisd(angle, angularVelocity.normalized())) * orientation).normalized();
-    }
+    std::visit([&](auto& s) { s.advance(h, velocity, angularVelocity); }, surface);
   }
 };
 

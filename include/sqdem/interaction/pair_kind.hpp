@@ -39,10 +39,11 @@ inline PairKind pairKind(const Superquadric& A, const Superquadric& B) {
 /// A sphere on a cylinder is not round: the cylinder's curvature differs along and around its
 /// axis. A sphere on a mesh is not taken as round either (its edges and vertices are solved as
 /// lines and points, a face as a plane: one kernel for every feature).
-inline PairKind wallPairKind(const Superquadric& A, WallShape wall) {
-  if (wall == WallShape::Cylinder) return PairKind::ParticleCylinder;
-  if (wall == WallShape::Mesh) return PairKind::ParticleMesh;
-  return A.isSphere() ? PairKind::SphereWall : PairKind::ParticleWall;
+inline PairKind wallPairKind(const Superquadric& A, const Wall& wall) {
+  return std::visit(PerShape{[&](const PlaneWall&) { return A.isSphere() ? PairKind::SphereWall : PairKind::ParticleWall; },
+                             [](const CylinderWall&) { return PairKind::ParticleCylinder; },
+                             [](const MeshWall&) { return PairKind::ParticleMesh; }},
+                    wall.surface);
 }
 
 }  // namespace sqdem

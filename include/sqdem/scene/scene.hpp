@@ -59,34 +59,12 @@ struct InteractionSpec {
   double rollingHysteresis = 0.0;  ///< dgamma/gamma of the rolling resistance (0: off, needs haervig_jkr)
 };
 
-/// A wall: a plane (point, normal), a cylinder (point on the axis, axis, radius, spin) or a
-/// triangle mesh from an STL file (point: where the file's origin is placed; it may rotate
-/// about it).
+/// A wall as the scene gives it (walls_section.cpp): the engine's wall at the start, and a mesh
+/// wall's mesh, read, repaired and scaled to m at load (the world takes it and sets MeshWall::mesh:
+/// build_world.cpp).
 struct WallSpec {
-  WallShape shape = WallShape::Plane;
-  Vec3 point = Vec3::Zero(), normal = Vec3::UnitZ(), velocity = Vec3::Zero();
-  Vec3 axis = Vec3::UnitY();  ///< unit (cylinder)
-  double radius = 0.0;        ///< (m, cylinder)
-  double length = 0.0;        ///< of a finite cylinder's barrel between its ends (m; 0: infinite)
-  bool flatEnds = false;      ///< a finite cylinder's ends: discs (`ends: flat`), not hemispheres
-  Vec3 angularVelocity = Vec3::Zero();  ///< about point (rad/s): spin x axis (cylinder), any (mesh)
-  std::uint32_t material = 0;
-  std::shared_ptr<const MeshFeatures> mesh;  ///< read, repaired and scaled to m at load (mesh walls)
-
-  /// The engine's wall.
-  Wall wall() const {
-    Wall w;
-    w.plane = Plane{point, normal};
-    w.velocity = velocity;
-    w.material = material;
-    w.shape = shape;
-    w.cylinder = Cylinder{point, axis, radius};
-    if (length > 0.0) w.cylinder.halfLength = 0.5 * length;
-    w.cylinder.flatEnds = flatEnds;
-    w.angularVelocity = angularVelocity;
-    w.origin = point;  // Wall::mesh is set where the world takes the mesh (build_world.cpp)
-    return w;
-  }
+  Wall wall;
+  std::shared_ptr<const MeshFeatures> mesh;
 };
 
 struct InsertionSpec {

@@ -52,7 +52,7 @@ struct PlateMeasures {
 /// reader's rule for stages that press).
 PlateMeasures measurePlate(const World& world, std::size_t plate);
 /// The floor: the first plane wall facing +z, if any.
-const Wall* floorWall(const World& world);
+const PlaneWall* floorWall(const World& world);
 /// The particles' volume (m^3).
 double solidVolume(const World& world);
 

@@ -243,8 +243,9 @@ class World {
   /// Wall w's load from its exact sums (wallLoads_, summed over the ranks).
   void setWallLoad(std::size_t w);
   /// Mesh wall w's features within `reach` (m) of particle i, ascending.
-  void addMeshCandidates(std::uint32_t i, std::uint32_t w, double reach, std::vector<CandidateKey>& next) const;
+  void addMeshCandidates(std::uint32_t i, std::uint32_t w, const MeshWall& wall, double reach, std::vector<CandidateKey>& next) const;
   bool wallsMovedHalfSkin() const;
+  const Vec3& planeNormal(std::size_t w) const;  ///< of wall w, a plane (else std::invalid_argument)
   double servoVelocity(std::size_t w) const;  ///< along wall w's normal (m/s), WallServo
   double largestRange() const;  ///< the largest gap any law acts across (m)
   std::vector<Superquadric> shapes_;
