@@ -487,7 +487,7 @@ TEST(Engine, SceneErrorsNameLineKeyAndWhatIsAllowed) {
                    "'interactions[0]': becker_kamlah needs yield_strength (Pa): give it here or in both materials");
   expectSceneError(withInteraction("    lambda_max: 2.5\n"),
                    "'interactions[0].lambda_max': unknown key (allowed: materials, normal, tangential, eccentricity, cap_factor, "
-                   "curvature_tolerance, reduced_stiffness, restitution, rolling_hysteresis, friction, and for elliptic_hertz: roughness); "
+                   "curvature_tolerance, reduced_stiffness, restitution, rolling_hysteresis, friction, bond, and for elliptic_hertz: roughness); "
                    "'lambda_max' is a key of normal: becker_kamlah");
   expectSceneError(withInteraction("    roughness: {sigma: 1.0e-6}\n"), "'interactions[0].roughness.asperity_count': missing");
   expectSceneError(withInteraction("    curvature_tolerance: 0.5\n"),
@@ -495,7 +495,7 @@ TEST(Engine, SceneErrorsNameLineKeyAndWhatIsAllowed) {
   expectSceneError(withInteraction("    normal: nan_adhesive\n    roughness: {sigma: 1.0e-6, asperity_count: 10}\n"
                                    "    surface_energy: 0.1\n    yield_pressure: 1.0e6\n"),
                    "'interactions[0].roughness': unknown key (allowed: materials, normal, tangential, eccentricity, cap_factor, "
-                   "curvature_tolerance, reduced_stiffness, restitution, rolling_hysteresis, friction, and for nan_adhesive: surface_energy, "
+                   "curvature_tolerance, reduced_stiffness, restitution, rolling_hysteresis, friction, bond, and for nan_adhesive: surface_energy, "
                    "yield_pressure, elastic_stiffness, plastic_stiffness); 'roughness' is a key of normal: elliptic_hertz, "
                    "volume_sphere_hertz, elliptic_jkr (Greenwood-Williamson roughness is built on elastic asperities");
   expectSceneError(withInteraction("    normal: jamari\n    hardness: 1.0e6\n    surface_energy: 0.1\n"),
@@ -506,6 +506,26 @@ TEST(Engine, SceneErrorsNameLineKeyAndWhatIsAllowed) {
   expectSceneError(withInteraction("    normal: elliptic_jkr\n    surface_energy: -0.1\n"),
                    "'interactions[0].surface_energy': must be > 0 (J/m^2, gamma; W = 2 gamma)");
   expectSceneError(withInteraction("    restitution: 0\n"), "'interactions[0].restitution': must be in (0, 1]");
+  // Bonds (docs/bonds.md): their keys, a stage forming them without any, a gap beyond the skin,
+  // and the energy ledger, which does not account them yet.
+  const std::string bond = "    bond: {normal_stiffness: 1.0e12, shear_stiffness: 4.0e11, tensile_strength: 1.0e6, shear_strength: 2.0e6}\n";
+  expectSceneError(withInteraction("    bond: {normal_stiffness: 1.0e12, shear_stiffness: 4.0e11, tensile_strength: 1.0e6}\n"),
+                   "'interactions[0].bond.shear_strength': missing");
+  expectSceneError(withInteraction("    bond: {normal_stiffness: 1.0e12, shear_stiffness: 4.0e11, tensile_strength: 1.0e6, "
+                                   "shear_strength: 2.0e6, radius: 1}\n"),
+                   "'interactions[0].bond.radius': unknown key (allowed: radius_multiplier, normal_stiffness, shear_stiffness, "
+                   "tensile_strength, shear_strength)");
+  expectSceneError(withInteraction("    bond: {normal_stiffness: 0, shear_stiffness: 4.0e11, tensile_strength: 1.0e6, shear_strength: 2.0e6}\n"),
+                   "'interactions[0].bond.normal_stiffness': must be > 0 (Pa/m)");
+  expectSceneError(replaced(bedScene, "{name: settle, duration: 0.2}", "{name: settle, duration: 0.2, form_bonds: {gap: 0.01}}"),
+                   "'stages[0].form_bonds': no interaction has a bond");
+  expectSceneError(replaced(withInteraction(bond), "{name: settle, duration: 0.2}", "{name: settle, duration: 0.2, form_bonds: {gap: -1}}"),
+                   "'stages[0].form_bonds.gap': must be >= 0");
+  expectSceneError(replaced(withInteraction(bond), "stages:", "output: {energy: true}\nstages:"),
+                   "'output.energy': the energy ledger does not account bonds yet; interactions[0] has one");
+  EXPECT_THROW(buildWorld(loadScene(writeScene("bond_gap", replaced(withInteraction(bond), "{name: settle, duration: 0.2}",
+                                                                    "{name: settle, duration: 0.2, form_bonds: {gap: 5}}")))),
+               SceneError);
   expectSceneError("seed: [1", "not valid YAML");
   // A roughness range beyond the skin, and a region too small for the particles, are reported
   // before anything runs.

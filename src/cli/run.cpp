@@ -82,6 +82,10 @@ void printSummary(const World& world, const RunReport& report, double wall, cons
                 "reach), %lld contacts outside their law's valid parameters (no force)\n",
                 st.lostAdhesions, st.lawFailures);
   }
+  if (world.interactions().store().withBonds) {
+    std::printf("bonds: %zu intact, %lld broken, %lld lost (their pair left the neighbour list intact: raise 'skin')\n",
+                world.bondCount(), st.bondsBroken, st.lostBonds);
+  }
   std::printf("final: solid fraction %.4f (bulk slab %.3g m), mean coordination %.3f (%.3f without rattlers), bed height %.4g m\n",
               m.solidFraction, m.slabHeight, m.meanCoordination, m.meanCoordinationNonRattlers, m.bedHeight);
   if (m.betweenWallsFraction > 0.0) std::printf("final: solid fraction between the walls %.4f\n", m.betweenWallsFraction);

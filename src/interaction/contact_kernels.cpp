@@ -251,10 +251,8 @@ void groupKernel(std::span<const std::uint32_t> members, const ContactModel& pai
     }
     s.spring[k] = history.spring;
     s.normalHistory[k] = history.normal;
-    if (s.withRolling) {
-      s.rolling[k] = history.rolling;
-      s.moment[k] = force.momentOnB;
-    }
+    if (s.withRolling) s.rolling[k] = history.rolling;
+    if (s.withMoment()) s.moment[k] = force.momentOnB;
     s.acting[k] = force.acting;
     s.force[k] = force.onB;
     s.load[k] = {force.normal, force.normalDamping, force.normalStiffness, force.area, force.yielded};
@@ -352,6 +350,7 @@ void Interactions::compute(const InteractionScene& scene, ContactStatistics& sta
     const std::span<const std::uint32_t> members = memberShare(group, owned, scene.split);
     std::visit([&](const auto& law) { runGroup(group.kind, members, model, law, scene, speedBound, skips, store_, statistics); },
                model.normal);
+    if (model.bond) addBondLoads(scene, members, *model.bond, statistics);
   }
 }
 

@@ -59,6 +59,7 @@ void ContactStore::carryOver(std::size_t k, const ContactStore& other, std::size
                                                                : void()),
      ...);
   }, stateArrays);
+  if (withBonds && other.withBonds) bond[k] = other.bond[from];
 }
 
 void ContactStore::permute(const std::vector<std::uint32_t>& order) {
@@ -83,21 +84,24 @@ void ContactStore::read(CheckpointReader& in) {
 }
 
 void ContactStore::writeArrays(CheckpointWriter& out) const {
-  for (const bool flag : {withRolling, withCurvatureCache, withEnergy}) out.put(static_cast<std::uint8_t>(flag));
+  for (const bool flag : {withRolling, withCurvatureCache, withEnergy, withBonds}) out.put(static_cast<std::uint8_t>(flag));
   forEachArray(*this, [&](const auto& array) { out.putVector(array); });
 }
 
 ContactStore ContactStore::readArrays(CheckpointReader& in, const ContactStore& layout) {
-  std::uint8_t rolling = 0, cache = 0, energy = 0;
+  std::uint8_t rolling = 0, cache = 0, energy = 0, bonds = 0;
   in.get(rolling);
   in.get(cache);
   in.get(energy);
-  requireIntact(rolling == layout.withRolling && cache == layout.withCurvatureCache && energy == layout.withEnergy,
+  in.get(bonds);
+  requireIntact(rolling == layout.withRolling && cache == layout.withCurvatureCache && energy == layout.withEnergy &&
+                    bonds == layout.withBonds,
                 "optional contact arrays");
   ContactStore s;
   s.withRolling = layout.withRolling;
   s.withCurvatureCache = layout.withCurvatureCache;
   s.withEnergy = layout.withEnergy;
+  s.withBonds = layout.withBonds;
   const std::uint64_t anyLength = ~std::uint64_t{0};  // bounded by the bytes left
   std::uint64_t count = 0;
   bool first = true;

@@ -34,13 +34,14 @@ ContactStore emptyStore(const InteractionScene& scene) {
   s.withEnergy = scene.energy;
   for (const ContactModel& m : scene.models) {
     s.withRolling = s.withRolling || m.rolling.has_value();
+    s.withBonds = s.withBonds || m.bond.has_value();
     s.withCurvatureCache = s.withCurvatureCache || (anyNonRound && m.usesCurvatures() && m.curvatureTolerance > 0.0);
   }
   return s;
 }
 
-void Interactions::setCandidates(const std::vector<CandidateKey>& candidates, const InteractionScene& scene,
-                                 const std::vector<std::uint32_t>& ghostOwner) {
+std::size_t Interactions::setCandidates(const std::vector<CandidateKey>& candidates, const InteractionScene& scene,
+                                        const std::vector<std::uint32_t>& ghostOwner) {
   if (candidates.size() > contactMask) throw std::length_error("Interactions: more than 2^29 candidate contacts");
   const std::vector<std::uint32_t>& id = scene.particles.id;
   ContactStore next = emptyStore(scene);
@@ -61,6 +62,8 @@ void Interactions::setCandidates(const std::vector<CandidateKey>& candidates, co
   remote_.clear();
   regroup(scene);
   indexInvolvement(scene.particles.size(), ghostOwner);
+  const auto intact = [](const ContactStore& s) { return std::ranges::count_if(s.bond, [](const BondRecord& b) { return b.intact(); }); };
+  return static_cast<std::size_t>(intact(previous) - intact(store_));
 }
 
 void Interactions::removeLeaving(const std::vector<std::uint8_t>& leaving) {
@@ -106,7 +109,7 @@ const std::vector<std::uint32_t>& Interactions::listActing() const {
 void Interactions::fitStore(const InteractionScene& scene) {
   const ContactStore wanted = emptyStore(scene);
   if (wanted.withRolling == store_.withRolling && wanted.withCurvatureCache == store_.withCurvatureCache &&
-      wanted.withEnergy == store_.withEnergy) {
+      wanted.withEnergy == store_.withEnergy && wanted.withBonds == store_.withBonds) {
     return;
   }
   ContactStore fitted = wanted;

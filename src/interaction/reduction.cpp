@@ -12,7 +12,7 @@ namespace {
 /// Contact k's load on B as a torque about centre: its force's moment and the pure moment (B's torque
 /// about its centre; A's, about its own, with the sign reversed).
 [[gnu::always_inline]] inline Vec3 torqueAbout(const ContactStore& s, std::uint32_t k, const Vec3& centre) {
-  return (s.point[k] - centre).cross(s.force[k]) + (s.withRolling ? s.moment[k] : Vec3::Zero());
+  return (s.point[k] - centre).cross(s.force[k]) + (s.withMoment() ? s.moment[k] : Vec3::Zero());
 }
 
 }  // namespace
@@ -66,7 +66,7 @@ void Interactions::reduce(ParticleStore& p, const Vec3& gravity, double drag, co
       if (!s.acting[k]) continue;
       const std::uint32_t w = s.b[k] & ~wallFlag;
       const Vec3 torque = (s.point[k] - s.wallImage[k] - walls[w].reference()).cross(s.force[k]) +
-                          (s.withRolling ? s.moment[k] : Vec3::Zero());
+                          (s.withMoment() ? s.moment[k] : Vec3::Zero());
       const Vec3 elastic = s.force[k] - s.load[k].damping * s.normal[k];
       std::array<ExactSum, 10>& part = mine[w].part;
       for (int d = 0; d < 3; ++d) {

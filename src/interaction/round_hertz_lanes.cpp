@@ -225,10 +225,8 @@ template <bool OnWall>
     s.point[k] = take(l.point, j);
     s.spring[k] = take(l.spring, j);
     if (!acting) s.normalHistory[k] = {};
-    if (s.withRolling) {
-      if (!acting) s.rolling[k].setZero();
-      s.moment[k].setZero();
-    }
+    if (s.withRolling && !acting) s.rolling[k].setZero();
+    if (s.withMoment()) s.moment[k].setZero();
     s.acting[k] = acting;
     s.force[k] = take(l.force, j);
     s.load[k] = {l.normalForce[j], l.damping[j], l.stiffness[j], l.area[j], false};

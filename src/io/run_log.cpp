@@ -16,7 +16,7 @@ bool alongAnAxis(const Wall& w) {
 }  // namespace
 
 RunLog::RunLog(const std::filesystem::path& path, const World& world, std::optional<std::size_t> plate)
-    : path_(path), plate_(plate) {
+    : path_(path), plate_(plate), bonds_(world.interactions().store().withBonds) {
   if (world.communicator().rank() != 0) {
     out_.setstate(std::ios::badbit);  // the other ranks' rows go nowhere
     return;
@@ -36,6 +36,7 @@ RunLog::RunLog(const std::filesystem::path& path, const World& world, std::optio
   }
   out_ << ",yielded_fraction,largest_overlap_ratio";
   if (plate_) out_ << ",plate_gap_m,plate_pressure_Pa,porosity";
+  if (bonds_) out_ << ",bonds,bonds_broken";
   if (world.energyLedger()) {
     out_ << ",work_bodies_J,work_gravity_J,elastic_energy_J,plastic_dissipation_J,damping_dissipation_J,tangential_dissipation_J"
             ",drag_dissipation_J,energy_residual_J";
@@ -64,6 +65,7 @@ std::optional<PlateMeasures> RunLog::row(const World& world, long step, const st
     plate = measurePlate(world, *plate_);
     out_ << ',' << plate->gap << ',' << plate->pressure << ',' << plate->porosity;
   }
+  if (bonds_) out_ << ',' << world.bondCount() << ',' << world.totalStatistics().bondsBroken;
   if (const auto& e = world.energyLedger()) {
     out_ << ',' << e->bodies << ',' << e->gravity << ',' << e->stored << ',' << e->plastic() << ',' << e->damping << ','
          << e->tangential << ',' << e->drag << ',' << e->residual(world.kineticEnergy());

@@ -185,6 +185,17 @@ World buildWorld(const Scene& scene) {
       }
     }
   }
+  // Bonds form where the detector finds the gap, within the skin.
+  double largestVolumeRadius = 0.0;
+  for (const Superquadric& s : shapes) largestVolumeRadius = std::max(largestVolumeRadius, s.volumeEquivalentRadius());
+  for (std::size_t k = 0; k < scene.stages.size(); ++k) {
+    const double gap = scene.stages[k].bondGap.value_or(0.0) * largestVolumeRadius;
+    if (gap > skin) {
+      throw SceneError(scene.path + ": stages[" + std::to_string(k) + "].form_bonds.gap: " + shortNumber(*scene.stages[k].bondGap) +
+                       " x the largest volume radius, " + shortNumber(gap) + " m, is beyond the skin " + shortNumber(skin) +
+                       " m: raise 'skin' to at least that or give a smaller gap");
+    }
+  }
   World world(shapes, materials, scene.domain, skin, scene.broadPhase);
   world.setReorderInterval(scene.reorderEvery);
   world.setSphereOrientations(scene.output.sphereOrientation);
@@ -202,6 +213,7 @@ World buildWorld(const Scene& scene) {
     if (in.friction >= 0.0) model.tangential.friction = in.friction;
     // F_C and xi_crit of the rolling resistance use the real material.
     if (in.rollingHysteresis > 0.0) model.rolling = HaervigRollingResistance{in.rollingHysteresis, model.effectiveModulus};
+    model.bond = in.bond;
     model.effectiveModulus *= in.stiffnessScale;
     model.tangential.effectiveShear *= in.stiffnessScale;
     const std::string where = scene.path + ": interactions[" + std::to_string(&in - scene.interactions.data()) + "]";

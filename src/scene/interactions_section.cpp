@@ -60,6 +60,19 @@ class SceneLawInput final : public LawInput {
   std::vector<std::pair<std::string, double>>& record_;
 };
 
+/// `bond`: the pair's parallel bond (mechanics/parallel_bond.hpp, docs/bonds.md).
+ParallelBond readBond(const Reader& r, const YAML::Node& b, const std::string& where) {
+  if (!b.IsMap()) {
+    r.fail(b, where, "must be a map {radius_multiplier, normal_stiffness, shear_stiffness, tensile_strength, shear_strength}");
+  }
+  r.allowOnly(b, where, {"radius_multiplier", "normal_stiffness", "shear_stiffness", "tensile_strength", "shear_strength"});
+  return {.radiusMultiplier = b["radius_multiplier"] ? r.positive(b, "radius_multiplier", where, "-") : 1.0,
+          .normalStiffness = r.positive(b, "normal_stiffness", where, "Pa/m"),
+          .shearStiffness = r.positive(b, "shear_stiffness", where, "Pa/m"),
+          .tensileStrength = r.positive(b, "tensile_strength", where, "Pa"),
+          .shearStrength = r.positive(b, "shear_strength", where, "Pa")};
+}
+
 }  // namespace
 
 void readInteractions(const Reader& r, const YAML::Node& root, Scene& scene) {
@@ -73,7 +86,8 @@ void readInteractions(const Reader& r, const YAML::Node& root, Scene& scene) {
     const std::string where = "interactions[" + std::to_string(k) + "]";
     const std::vector<std::string_view> pairKeys{"materials",         "normal",      "tangential",         "eccentricity",
                                                  "cap_factor",        "curvature_tolerance", "reduced_stiffness",
-                                                 "restitution",       "rolling_hysteresis",  "friction"};
+                                                 "restitution",       "rolling_hysteresis",  "friction",
+                                                 "bond"};
     r.uniqueKeys(in, where);
     const YAML::Node pair = in["materials"];
     if (!pair || !pair.IsSequence() || pair.size() != 2) r.fail(pair ? pair : in, where + ".materials", "must be a pair [material, material]");
@@ -125,6 +139,7 @@ void readInteractions(const Reader& r, const YAML::Node& root, Scene& scene) {
       r.fail(in["rolling_hysteresis"], where + ".rolling_hysteresis",
              "needs normal: haervig_jkr (001's rolling resistance, Eqs. 18-22, is built on its F_C and a_0)");
     }
+    if (in["bond"]) spec.bond = readBond(r, in["bond"], where + ".bond");
     scene.interactions.push_back(spec);
   }
   for (std::size_t a = 0; a < nm; ++a) {

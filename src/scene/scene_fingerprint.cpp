@@ -60,6 +60,9 @@ SceneFingerprint sceneFingerprint(const Scene& scene) {
     h.all(h.n(i.materialA), h.n(i.materialB), i.normalName, h.n(i.curvatures), h.n(i.ellipticTangential), h.n(i.eccentricity), i.capFactor,
           i.curvatureTolerance, i.restitution, i.friction, i.stiffnessScale, i.rollingHysteresis);
     for (const auto& [key, value] : i.lawParameters) h.all(key, value);
+    if (const std::optional<ParallelBond>& b = i.bond) {
+      h.all(b->radiusMultiplier, b->normalStiffness, b->shearStiffness, b->tensileStrength, b->shearStrength);
+    }
   }
   next();
   for (const WallSpec& w : scene.walls) {
@@ -85,7 +88,7 @@ SceneFingerprint sceneFingerprint(const Scene& scene) {
     h = SceneHasher();
     h.all(st.name, st.duration, st.kineticEnergyRatio, st.wallPressure, st.porosity, h.n(st.pressureWall), st.minimumDuration, st.velocityScale,
           st.viscousDamping, h.n(st.wall.value_or(~std::size_t{0})), st.wallVelocity,
-          h.n(st.servoWall.value_or(~std::size_t{0})), st.servo.pressure, st.servo.maxSpeed);
+          h.n(st.servoWall.value_or(~std::size_t{0})), st.servo.pressure, st.servo.maxSpeed, st.bondGap.value_or(-1.0));
     for (const auto& [t, x] : st.wallPath.points) h.all(t, x);
     out.stages.push_back(h.f.value());
   }

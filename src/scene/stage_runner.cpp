@@ -110,6 +110,7 @@ void StageRunner::enterStage() {
   if (stage.servoWall) world_.walls()[*stage.servoWall].servo = stage.servo;
   world_.setViscousDamping(stage.viscousDamping);
   const bool continuing = stage_ == start_.stage && start_.stepInStage > 0 && report_.stepsThisRun == 0;
+  if (stage.bondGap && !continuing) world_.formBonds(*stage.bondGap);
   step_ = continuing ? start_.stepInStage : 0;
   stageStart_ = continuing ? start_.stageStart : world_.time();
   inStage_ = true;

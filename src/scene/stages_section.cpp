@@ -1,5 +1,6 @@
 // The scene's `stages:` (scene_sections.hpp).
 
+#include <algorithm>
 #include <string>
 
 #include "sqdem/io/plain_name.hpp"
@@ -14,7 +15,7 @@ void readStages(const Reader& r, const YAML::Node& root, Scene& scene) {
   for (std::size_t k = 0; k < stages.size(); ++k) {
     const std::string where = "stages[" + std::to_string(k) + "]";
     const YAML::Node st = stages[k];
-    r.allowOnly(st, where, {"name", "duration", "stop", "move_wall", "servo_wall", "viscous_damping"});
+    r.allowOnly(st, where, {"name", "duration", "stop", "move_wall", "servo_wall", "viscous_damping", "form_bonds"});
     StageSpec spec;
     spec.name = st["name"] ? r.text(st, "name", where) : "stage" + std::to_string(k);
     // Stage names go into CSV rows and file names.
@@ -27,6 +28,14 @@ void readStages(const Reader& r, const YAML::Node& root, Scene& scene) {
     spec.duration = r.positive(st, "duration", where, "s");
     spec.viscousDamping = r.number(st, "viscous_damping", where, 0.0);
     if (spec.viscousDamping < 0.0) r.fail(st["viscous_damping"], where + ".viscous_damping", "must be >= 0 (1/s)");
+    if (const YAML::Node bonds = st["form_bonds"]) {
+      r.allowOnly(bonds, where + ".form_bonds", {"gap"});
+      spec.bondGap = r.number(bonds, "gap", where + ".form_bonds");
+      if (!(*spec.bondGap >= 0.0)) r.fail(bonds["gap"], where + ".form_bonds.gap", "must be >= 0 (the largest gap over the smaller volume radius)");
+      if (std::none_of(scene.interactions.begin(), scene.interactions.end(), [](const InteractionSpec& i) { return i.bond.has_value(); })) {
+        r.fail(bonds, where + ".form_bonds", "no interaction has a bond: give one a 'bond' {normal_stiffness, ...}");
+      }
+    }
     if (const YAML::Node stop = st["stop"]) {
       r.allowOnly(stop, where + ".stop", {"kinetic_energy_ratio", "velocity_scale", "wall_pressure", "porosity", "wall", "after"});
       if (!stop["kinetic_energy_ratio"] && !stop["wall_pressure"] && !stop["porosity"]) {

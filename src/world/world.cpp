@@ -24,10 +24,11 @@ using Clock = std::chrono::steady_clock;
 double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
 
 /// The energy ledger tells stored from dissipated work only for laws that state their stored energy.
-void requireStoredEnergy(const NormalLaw& law) {
-  if (!storesEnergy(law)) {
+void requireLedgerModel(const ContactModel& model) {
+  if (!storesEnergy(model.normal)) {
     throw std::invalid_argument("World: the energy ledger needs laws that state their stored energy (StoredEnergyLaw)");
   }
+  if (model.bond) throw std::invalid_argument("World: the energy ledger does not account bonds yet");
 }
 
 }  // namespace
@@ -86,7 +87,8 @@ void World::setContactModel(std::uint32_t ma, std::uint32_t mb, const ContactMod
   const std::size_t n = materials_.size();
   double largest = 0.0;
   for (const Superquadric& s : shapes_) largest = std::max(largest, s.volumeEquivalentRadius());
-  if (ledger_) requireStoredEnergy(model.normal);
+  if (ledger_) requireLedgerModel(model);
+  if (model.bond) model.bond->check();
   ContactModel m = model;
   m.reach = normalReach(m.normal, m.effectiveModulus, m.capFactor * largest);
   m.tangential.elliptic = m.tangential.elliptic && m.curvatures;  // the ellipse needs the curvatures
@@ -132,7 +134,7 @@ void World::buildCandidates() {
                  walls_[w].surface);
     }
   }
-  interactions_.setCandidates(next, interactionScene(), ghosts_.localOwners());
+  statistics_.lostBonds += static_cast<long long>(interactions_.setCandidates(next, interactionScene(), ghosts_.localOwners()));
   if (communicator_->size() > 1) remoteLoads_.build(interactions_, p, ghosts_, *communicator_);
   wallReference_.clear();
   for (const Wall& w : walls_) wallReference_.push_back(w.reference());
@@ -371,10 +373,20 @@ void World::step() {
 void World::enableEnergyLedger() {
   if (forcesCurrent_) throw std::logic_error("World: the energy ledger starts before the first force computation");
   for (std::size_t k = 0; k < models_.size(); ++k) {
-    if (modelSet_[k]) requireStoredEnergy(models_[k].normal);
+    if (modelSet_[k]) requireLedgerModel(models_[k]);
   }
   ledger_.emplace();
   interactions_.fitStore(interactionScene());
+}
+
+std::size_t World::formBonds(double gapRatio) {
+  if (!(gapRatio >= 0.0)) throw std::invalid_argument("World: a bond's gap ratio must be >= 0");
+  const std::size_t formed = interactions_.formBonds(interactionScene(), gapRatio);
+  return static_cast<std::size_t>(communicator_->sum(static_cast<long long>(formed)));
+}
+
+std::size_t World::bondCount() const {
+  return static_cast<std::size_t>(communicator_->sum(static_cast<long long>(interactions_.bondCount())));
 }
 
 double World::particlesEdited(double kineticBefore) {

@@ -42,6 +42,10 @@ void requireWholeIntact(const WholeState& whole, std::size_t walls, const std::v
     const MeshWall* mesh = wall != nullptr ? wall->as<MeshWall>() : nullptr;
     requireIntact(mesh != nullptr ? s.feature[k] < meshes[mesh->mesh].featureCount() : s.feature[k] == 0, "mesh feature");
     requireIntact(k == 0 || s.key(k - 1) < s.key(k), "contact keys");
+    if (s.withBonds) {
+      const BondRecord& b = s.bond[k];
+      requireIntact(b.state <= BondRecord::State::Broken && (!b.intact() || (b.radius > 0.0 && std::isfinite(b.radius))), "bond");
+    }
   }
 }
 

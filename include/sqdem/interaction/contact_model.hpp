@@ -26,6 +26,7 @@
 #include "sqdem/mechanics/elliptic.hpp"
 #include "sqdem/mechanics/law_registry.hpp"
 #include "sqdem/mechanics/mindlin_spring.hpp"
+#include "sqdem/mechanics/parallel_bond.hpp"
 
 #include <optional>
 
@@ -45,6 +46,8 @@ struct ContactModel {
   ViscousDamping damping;          ///< normal and tangential
   MindlinSpring tangential;        ///< friction 0: none; on the circle without curvatures
   std::optional<HaervigRollingResistance> rolling;  ///< with normal: haervig_jkr only
+  /// The pair's bonds, where they form (World::formBonds); they act beside the contact law.
+  std::optional<ParallelBond> bond;
   /// Bound of the normal law's range (m): the largest gap any of its contacts acts across
   /// (World::setContactModel sets it from the particle sizes).
   double reach = 0.0;

@@ -16,9 +16,11 @@
 //   load         acting, force and moment on B, the normal force's parts and the area (carried
 //                with the state: the energy ledger integrates from the last step's load)
 //   energy       the contact's stored energy and the work it absorbed in the last step
-// The rolling displacement and the moment exist only in a store made withRolling, the law cache
-// only withCurvatureCache, the energy only withEnergy (a scene without rolling resistance,
-// caching or an energy ledger stores none of them).
+//   bond         a parallel bond between the two bodies, where one formed (bond_frame.hpp)
+// The rolling displacement exists only in a store made withRolling, the moment withRolling or
+// withBonds, the law cache only withCurvatureCache, the energy only withEnergy, the bond only
+// withBonds (a scene without rolling resistance, caching, an energy ledger or bonds stores none
+// of them). A bond outlives a failed solve of its pair (reset keeps it).
 // Curvatures themselves are not stored: the fused kernels hand them from the detector to the
 // law within one contact. The store is kept in the order the candidates were found (near
 // slots together, for the kernels' memory traffic); key order is Interactions' index of it.
@@ -31,6 +33,7 @@
 #include "sqdem/contact/contact_geometry.hpp"
 #include "sqdem/dynamics/wall.hpp"
 #include "sqdem/interaction/curvature_cache.hpp"
+#include "sqdem/mechanics/bond_frame.hpp"
 #include "sqdem/mechanics/normal_law.hpp"
 
 namespace sqdem {
@@ -56,6 +59,17 @@ struct ContactEnergy {
   double normal = 0.0;      ///< by the rate-independent normal force: stored or plastically dissipated
   double damping = 0.0;     ///< by the normal viscous force
   double tangential = 0.0;  ///< by the tangential force and the rolling moment: springs and sliding
+};
+
+/// A contact's bond (docs/bonds.md): where it sits on both bodies and its section's radius. A
+/// broken one stays broken (it does not form again while the pair is a candidate).
+struct BondRecord {
+  enum class State : std::uint8_t { None, Intact, Broken };
+  BondRest rest;
+  double radius = 0.0;  ///< R = lambda min(R_vol A, R_vol B) (m)
+  State state = State::None;
+
+  bool intact() const { return state == State::Intact; }
 };
 
 /// A contact's place in key order: the pair of ids (A, then B: walls after particles), then the
@@ -93,10 +107,15 @@ struct ContactStore {
   std::vector<Vec3> moment;          ///< pure moment on B (N m), withRolling only
   std::vector<NormalLoad> load;
   std::vector<ContactEnergy> energy;  ///< withEnergy only
+  std::vector<BondRecord> bond;       ///< withBonds only
 
   bool withRolling = false;
   bool withCurvatureCache = false;
   bool withEnergy = false;
+  bool withBonds = false;
+
+  /// The moment array is kept: rolling resistance or bonds.
+  bool withMoment() const { return withRolling || withBonds; }
 
   std::size_t size() const { return a.size(); }
   bool onWall(std::size_t k) const { return (b[k] & wallFlag) != 0; }
@@ -122,11 +141,14 @@ struct ContactStore {
     std::apply([&](auto... member) { (f(s.*member), ...); }, stateArrays);
     f(s.acting);
     f(s.energy);
+    f(s.bond);
   }
   /// Whether an array (one of this store's) is kept: all but the optional ones (above).
   bool keeps(const void* array) const {
-    if (array == &rolling || array == &moment) return withRolling;
+    if (array == &rolling) return withRolling;
+    if (array == &moment) return withMoment();
     if (array == &energy) return withEnergy;
+    if (array == &bond) return withBonds;
     return array != &curvatureCache || withCurvatureCache;
   }
 
@@ -150,7 +172,8 @@ struct ContactStore {
     ahead(a), ahead(b), ahead(wallImage), ahead(status), ahead(localA), ahead(localB), ahead(separation);
     ahead(normal), ahead(overlap), ahead(point), ahead(spring), ahead(normalHistory);
     ahead(acting), ahead(force), ahead(load);
-    if (withRolling) ahead(rolling), ahead(moment);
+    if (withRolling) ahead(rolling);
+    if (withMoment()) ahead(moment);
     if (withCurvatureCache) ahead(curvatureCache);
     if (withEnergy) ahead(energy);
   }
@@ -161,7 +184,8 @@ struct ContactStore {
   void add(const ContactKey& key, std::uint32_t slotA, std::uint32_t slotB, const Vec3& wallImageOffset);
   /// Forgets contact k's geometry and history (it is solved cold next time).
   void reset(std::size_t k);
-  /// Copies contact `from` of `other` (same layout) into contact k: every state array.
+  /// Copies contact `from` of `other` into contact k: every state array and the bond (those both
+  /// stores keep).
   void carryOver(std::size_t k, const ContactStore& other, std::size_t from);
   /// Contact k's record, every kept array, for another process (its A migrates there).
   void write(std::size_t k, CheckpointWriter& out) const;
@@ -193,7 +217,7 @@ class ContactView {
   double overlap() const { return s_->overlap[k_]; }
   const Vec3& point() const { return s_->point[k_]; }
   const Vec3& force() const { return s_->force[k_]; }  ///< on B (N)
-  Vec3 moment() const { return s_->withRolling ? s_->moment[k_] : Vec3::Zero(); }
+  Vec3 moment() const { return s_->withMoment() ? s_->moment[k_] : Vec3::Zero(); }
   const NormalLoad& normalLoad() const { return s_->load[k_]; }
   const NormalHistory& normalHistory() const { return s_->normalHistory[k_]; }
   const Vec3& spring() const { return s_->spring[k_]; }

@@ -47,12 +47,16 @@ struct ContactStatistics {
   /// within its cut-off): should stay 0, the cut-off covers ContactModel::reach.
   long long lostAdhesions = 0;
   long long lawFailures = 0;       ///< contacts whose law had no valid form (NormalResponse::valid)
+  long long bondsBroken = 0;       ///< bonds whose stresses reached a strength (parallel_bond.hpp)
+  /// Intact bonds dropped because their pair left the candidate list (stretched beyond the
+  /// skin): should stay 0.
+  long long lostBonds = 0;
 
   /// Calls f(counter) for every counter, in a fixed order (sums, reductions over ranks).
   template <typename Statistics, typename F>
   static void forEachCount(Statistics& s, F&& f) {
     for (auto* count : {&s.detectorCalls, &s.detectorIterations, &s.detectorConfirmations, &s.detectorFailures, &s.deepOverlaps, &s.lostAdhesions,
-                        &s.lawFailures}) {
+                        &s.lawFailures, &s.bondsBroken, &s.lostBonds}) {
       f(*count);
     }
     for (auto& count : s.failuresByStatus) f(count);
@@ -143,8 +147,9 @@ class Interactions {
   /// Replaces the candidates (unique keys, in any order: the store keeps theirs), carrying over
   /// the geometry and histories of pairs that persist (matched by key), and regroups them. A is
   /// an owned slot; ghostOwner[g] is the owned slot that ghost slot particles.size() + g stands
-  /// for (its loads go there), or remoteGhost.
-  void setCandidates(const std::vector<CandidateKey>& candidates, const InteractionScene& scene,
+  /// for (its loads go there), or remoteGhost. Returns how many intact bonds were dropped with
+  /// their pairs (they left the candidates: ContactStatistics::lostBonds).
+  std::size_t setCandidates(const std::vector<CandidateKey>& candidates, const InteractionScene& scene,
                      const std::vector<std::uint32_t>& ghostOwner);
   /// Keeps the store's optional arrays (rolling, curvature cache) to what the scene's contact
   /// models need, after a model changed: arrays added fresh, arrays no longer needed dropped.
@@ -163,6 +168,13 @@ class Interactions {
   /// Team work: detection and laws of every candidate; adds to the statistics. The particles'
   /// speed bounds (ParticleStore::speedBound, ghosts too) must be current when cullsBySpeed().
   void compute(const InteractionScene& scene, ContactStatistics& statistics);
+  /// Bonds formed (docs/bonds.md) between the stored pairs whose model has one, where a pair's
+  /// gap is at most gapRatio times the smaller volume radius (a particle's own on a plane; not
+  /// on a cylinder or a mesh), at the middle of the common-normal points; returns how many.
+  /// Serial, between computations, the store's candidates current.
+  std::size_t formBonds(const InteractionScene& scene, double gapRatio);
+  /// This process's intact bonds.
+  std::size_t bondCount() const;
   /// Whether some group culls separated pairs by the particles' speed bounds (the iterative kinds).
   bool cullsBySpeed() const;
   /// Team work: per particle, F = m (g - c v) plus its contacts' loads, and the torques; per
@@ -223,6 +235,10 @@ class Interactions {
     std::vector<std::uint32_t> members;  ///< contact indices, ascending
   };
   void regroup(const InteractionScene& scene);
+  /// The bonds of a group's members (by the thread that computed them): their loads added to the
+  /// contacts', or broken (counted).
+  void addBondLoads(const InteractionScene& scene, std::span<const std::uint32_t> members, const ParallelBond& bond,
+                    ContactStatistics& statistics);
   /// The calling thread's run of a group's members: those whose A is one of its particles
   /// (its share of the `owned` ones by `split`, evenly without) while the store holds its
   /// contacts by A's slot, as setCandidates makes it; else an even share.

@@ -57,6 +57,7 @@ struct InteractionSpec {
   double friction = -1.0;       ///< pair friction mu (< 0: min of the materials')
   double stiffnessScale = 1.0;  ///< reduced-stiffness factor E_mod/E (001 Eq. 24)
   double rollingHysteresis = 0.0;  ///< dgamma/gamma of the rolling resistance (0: off, needs haervig_jkr)
+  std::optional<ParallelBond> bond;  ///< the pair's bonds, where a stage forms them (`bond`)
 };
 
 /// A wall as the scene gives it (walls_section.cpp): the engine's wall at the start, and a mesh
@@ -102,6 +103,9 @@ struct StageSpec {
   std::size_t pressureWall = 0;
   double minimumDuration = 0.0;     ///< the stop criteria are checked only after this (s)
   double viscousDamping = 0.0;      ///< background drag c (1/s), F = -c m v
+  /// Bonds formed as the stage starts (`form_bonds.gap`): between the pairs whose interaction
+  /// has a bond, with a gap up to this times the smaller volume radius (-)
+  std::optional<double> bondGap;
   std::optional<std::size_t> wall;  ///< wall moved in this stage
   Vec3 wallVelocity = Vec3::Zero(); ///< its velocity during the stage (m/s), or
   WallPath wallPath;                ///< its position along its normal (when points are given)

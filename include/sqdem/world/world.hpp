@@ -148,6 +148,13 @@ class World {
   double particlesEdited(double kineticBefore);
   /// Computes contacts and forces at the current state (no integration).
   void computeForces();
+  /// Forms bonds (docs/bonds.md) between the pairs whose contact model has one and whose gap is
+  /// at most gapRatio times the smaller volume radius, where the last computation's candidates
+  /// are (after a step or computeForces); returns how many formed, over every rank. Their loads
+  /// act from the next computation.
+  std::size_t formBonds(double gapRatio);
+  /// Intact bonds, over every rank.
+  std::size_t bondCount() const;
 
   /// The owned particles, slots [0, size()), and their ghosts after them (ghosts()).
   ParticleStore& particles() { return particles_; }

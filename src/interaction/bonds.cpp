@@ -1,0 +1,84 @@
+// The bond component of the contacts (docs/bonds.md): bonds formed between the pairs whose model
+// has one, and each step their loads added to their contacts' (after the contact law, by the
+// thread that computed the contact), or the bond broken.
+
+#include <algorithm>
+
+#include "sqdem/contact/detector.hpp"
+#include "sqdem/interaction/interactions.hpp"
+
+namespace sqdem {
+namespace {
+
+/// Body B of contact k as a bond sees it: a particle's pose, or a plane's point unturned (planes
+/// translate only).
+Pose bondPoseB(const InteractionScene& scene, const ContactStore& s, std::uint32_t k) {
+  if (s.onWall(k)) return {scene.walls[s.b[k] & ~wallFlag].reference(), Quat::Identity()};
+  return {scene.particles.position[s.b[k]], scene.particles.orientation[s.b[k]]};
+}
+
+}  // namespace
+
+std::size_t Interactions::formBonds(const InteractionScene& scene, double gapRatio) {
+  const ParticleStore& p = scene.particles;
+  ContactStore& s = store_;
+  std::size_t formed = 0;
+  for (const Group& group : groups_) {
+    const ContactModel& model = scene.models[group.model];
+    // Bonds to a plane, not to a cylinder or a mesh (they turn: docs/bonds.md).
+    if (!model.bond || group.kind == PairKind::ParticleCylinder || group.kind == PairKind::ParticleMesh) continue;
+    for (const std::uint32_t k : group.members) {
+      if (s.bond[k].state != BondRecord::State::None) continue;
+      const Superquadric& A = scene.shapes[p.shape[s.a[k]]];
+      const Pose poseA{p.position[s.a[k]], p.orientation[s.a[k]]}, poseB = bondPoseB(scene, s, k);
+      const DetectorSettings settings{.cutoff = scene.skin, .tolerance = scene.detector.tolerance, .curvatures = false};
+      ContactGeometry g;
+      double r = A.volumeEquivalentRadius();
+      if (s.onWall(k)) {
+        g = detectContact(A, poseA, scene.walls[s.b[k] & ~wallFlag].get<PlaneWall>().plane, settings);
+      } else {
+        const Superquadric& B = scene.shapes[p.shape[s.b[k]]];
+        g = detectContact(A, poseA, B, poseB, settings);
+        r = std::min(r, B.volumeEquivalentRadius());
+      }
+      if (!g.converged() || -g.overlap > gapRatio * r) continue;
+      s.bond[k] = {BondRest::formed(poseA, poseB, 0.5 * (g.pointA + g.pointB), g.normal), model.bond->radiusMultiplier * r,
+                   BondRecord::State::Intact};
+      ++formed;
+    }
+  }
+  return formed;
+}
+
+void Interactions::addBondLoads(const InteractionScene& scene, std::span<const std::uint32_t> members, const ParallelBond& bond,
+                                ContactStatistics& statistics) {
+  ContactStore& s = store_;
+  const ParticleStore& p = scene.particles;
+  long long broken = 0;
+  for (const std::uint32_t k : members) {
+    BondRecord& record = s.bond[k];
+    if (!record.intact()) continue;
+    const BondPlace place = bondPlace(record.rest, {p.position[s.a[k]], p.orientation[s.a[k]]}, bondPoseB(scene, s, k));
+    const BondLoads loads = bondLoads(bond, BondSection(record.radius), place.deformation);
+    if (loads.breaks(bond)) {
+      record.state = BondRecord::State::Broken;
+      ++broken;
+      continue;
+    }
+    // The bond's force acts at its centre: about the contact point, its moment joins the pure
+    // moment (reduction.cpp sums (point - x) x force + moment).
+    if (!s.acting[k]) s.point[k] = place.centre;
+    s.moment[k] += (place.centre - s.point[k]).cross(loads.force) + loads.moment;
+    s.force[k] += loads.force;
+    s.acting[k] = 1;
+  }
+#pragma omp critical(sqdem_contact_statistics)
+  statistics.bondsBroken += broken;
+}
+
+std::size_t Interactions::bondCount() const {
+  if (!store_.withBonds) return 0;
+  return static_cast<std::size_t>(std::ranges::count_if(store_.bond, [](const BondRecord& b) { return b.intact(); }));
+}
+
+}  // namespace sqdem

@@ -1,0 +1,175 @@
+// Bonds in the engine (docs/bonds.md): the loads the World applies against the parallel bond's
+// closed forms (Potyondy & Cundall 2004, Eqs. 10-11), its breakage at the strength, the series
+// stiffness of a bonded chain of spheres and of ellipsoids, the energy of an undamped bonded
+// pair, and a particle bonded to a plane under gravity.
+
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <stdexcept>
+
+#include "sqdem/mechanics/bond_frame.hpp"
+#include "sqdem/world/world.hpp"
+
+namespace sqdem {
+namespace {
+
+constexpr double r = 5e-6;  // sphere radius (m)
+constexpr double E = 2e11, nu = 0.3, rho = 4700.0;
+const ParallelBond bond{.radiusMultiplier = 0.5, .normalStiffness = 1e17, .shearStiffness = 4e16, .tensileStrength = 50e6,
+                        .shearStrength = 80e6};
+const BondSection section(bond.radiusMultiplier * r);
+
+Domain bigBox() {
+  Domain d;
+  d.lo = Vec3::Constant(-1e-3);
+  d.hi = Vec3::Constant(1e-3);
+  return d;
+}
+
+/// A world of `shape`s with bonds between them, frictionless and undamped (restitution 1).
+World bondedWorld(const Superquadric& shape) {
+  World world({shape}, {Material{E, nu, rho, 0.0, 1.0}}, bigBox(), 0.2 * r);
+  ContactModel model = world.defaultContactModel(0, 0);
+  model.bond = bond;
+  world.setContactModel(0, 0, model);
+  world.setTimeStep(1e-10);
+  return world;
+}
+
+/// Particles along x, `gap` apart surface to surface (long axis along x), bonded.
+World bondedChain(const Superquadric& shape, int count, double gap) {
+  World world = bondedWorld(shape);
+  const double pitch = 2.0 * shape.a() + gap;
+  for (int i = 0; i < count; ++i) world.addParticle(0, 0, Vec3(i * pitch, 0.0, 0.0), Quat::Identity());
+  world.computeForces();
+  EXPECT_EQ(world.formBonds(0.01), static_cast<std::size_t>(count - 1));
+  return world;
+}
+
+/// Every particle's centre moved along x by stretch per pitch (uniform strain), forces computed.
+void stretch(World& world, double perBond) {
+  ParticleStore& p = world.particles();
+  for (std::size_t i = 0; i < p.size(); ++i) p.position[i].x() += static_cast<double>(p.id[i]) * perBond;
+  world.computeForces();
+}
+
+// Tension through the engine: B pulled by u from A (both spheres, a gap of 1e-4 r so that no
+// contact acts): B feels -k_n A u along x, A the opposite; no torque.
+TEST(BondEngine, PairInTensionIsKnAu) {
+  omp_set_num_threads(1);
+  World world = bondedChain(Superquadric::sphere(r), 2, 1e-4 * r);
+  const double u = 2e-10;
+  stretch(world, u);
+  const ParticleStore& p = world.particles();
+  const double F = bond.normalStiffness * section.area * u;
+  for (std::size_t i = 0; i < 2; ++i) {
+    const double sign = p.id[i] == 1 ? -1.0 : 1.0;
+    EXPECT_NEAR((p.force[i] - sign * F * Vec3::UnitX()).norm(), 0.0, 1e-9 * F) << "particle " << p.id[i];
+    EXPECT_LT(p.torque[i].norm(), 1e-9 * F * r);
+  }
+  EXPECT_EQ(world.bondCount(), 1u);
+}
+
+// Breakage at the strength: stretched to u_c (1 -+ 1e-9), u_c = sigma_c / k_n, the bond holds,
+// then breaks (counted) and carries nothing.
+TEST(BondEngine, BreaksAtTheTensileStrength) {
+  omp_set_num_threads(1);
+  const double uc = bond.tensileStrength / bond.normalStiffness;
+  for (const double f : {1.0 - 1e-9, 1.0 + 1e-9}) {
+    World world = bondedChain(Superquadric::sphere(r), 2, 1e-4 * r);
+    stretch(world, f * uc);
+    EXPECT_EQ(world.bondCount(), f < 1.0 ? 1u : 0u) << f << " u_c";
+    EXPECT_EQ(world.totalStatistics().bondsBroken, f < 1.0 ? 0 : 1);
+    if (f > 1.0) EXPECT_EQ(world.particles().force[0], Vec3::Zero());
+  }
+}
+
+// A chain of n bonds stretched uniformly by u each: the interior particles balance, the ends carry
+// F = k_n A u, so the chain's stiffness F / (n u) is the series stiffness k_n A / n. Spheres, and
+// ellipsoids end to end along their long axis (the bond's radius from the volume radius).
+TEST(BondEngine, ChainUnderTensionHasTheSeriesStiffness) {
+  omp_set_num_threads(1);
+  for (const Superquadric& shape : {Superquadric::sphere(r), Superquadric::ellipsoid(1.6 * r, r, 0.8 * r)}) {
+    const int count = 6;
+    World world = bondedChain(shape, count, 1e-4 * r);
+    const double u = 1e-10;
+    stretch(world, u);
+    const BondSection s(bond.radiusMultiplier * shape.volumeEquivalentRadius());
+    const double F = bond.normalStiffness * s.area * u;
+    const ParticleStore& p = world.particles();
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      const double expected = p.id[i] == 0 ? F : p.id[i] == count - 1 ? -F : 0.0;
+      EXPECT_NEAR(p.force[i].x(), expected, 1e-9 * F) << "particle " << p.id[i];
+    }
+    const double chainStiffness = F / ((count - 1) * u);
+    EXPECT_NEAR(chainStiffness, bond.normalStiffness * s.area / (count - 1), 1e-9 * chainStiffness);
+  }
+}
+
+// Two bonded spheres released stretched, undamped and without contact: they oscillate, and the
+// kinetic plus the bond's energy stays what the stretch stored (velocity Verlet: its error
+// O((omega dt)^2), 1e-4 here).
+TEST(BondEngine, UndampedBondKeepsItsEnergy) {
+  omp_set_num_threads(1);
+  World world = bondedChain(Superquadric::sphere(r), 2, 0.005 * r);
+  const double u = 2e-10, k = bond.normalStiffness * section.area;  // below u_c = 5e-10 m
+  stretch(world, u);
+  const double mass = world.particles().mass[0], omega = std::sqrt(2.0 * k / mass);  // reduced mass m/2
+  world.setTimeStep(0.02 / omega);
+  const BondRecord& record = [&]() -> const BondRecord& {
+    const ContactStore& s = world.interactions().store();
+    for (std::size_t c = 0; c < s.size(); ++c) {
+      if (s.bond[c].intact()) return s.bond[c];
+    }
+    throw std::runtime_error("no bond");
+  }();
+  const auto energy = [&] {
+    const ParticleStore& p = world.particles();
+    const std::size_t a = p.id[0] == 0 ? 0 : 1, b = 1 - a;
+    const BondPlace place = bondPlace(record.rest, {p.position[a], p.orientation[a]}, {p.position[b], p.orientation[b]});
+    return world.kineticEnergy() + bondLoads(bond, section, place.deformation).energy;
+  };
+  const double start = energy();
+  EXPECT_NEAR(start, 0.5 * k * u * u, 1e-9 * start);
+  double worst = 0.0;
+  for (int s = 0; s < 2000; ++s) {  // ~6 periods
+    world.step();
+    worst = std::max(worst, std::abs(energy() / start - 1.0));
+  }
+  std::printf("undamped bond over 2000 steps of omega dt = 0.02: largest energy error %.2e\n", worst);
+  EXPECT_LT(worst, 1e-3);
+  EXPECT_EQ(world.bondCount(), 1u);
+}
+
+// A sphere hanging from a plane (the current collector) by a bond: under 1e4 g it stays put,
+// hanging by the static stretch m g / (k_n A); it holds up to the weight the bond carries,
+// m g = sigma_c A (straight under it, no bending), and breaks beyond. Overdamped by a drag of
+// 4 omega, so that the load comes on without overshoot.
+TEST(BondEngine, ParticleBondedToAPlaneHoldsItsWeightUpToTheStrength) {
+  omp_set_num_threads(1);
+  const double mass = rho * 4.0 / 3.0 * std::numbers::pi * r * r * r, k = bond.normalStiffness * section.area;
+  const double strength = bond.tensileStrength * section.area / mass;  // the gravity the bond holds (m/s^2)
+  for (const double g : {1e4 * 9.81, 0.9 * strength, 1.1 * strength}) {
+    World world = bondedWorld(Superquadric::sphere(r));
+    world.addWall(Wall{.surface = PlaneWall{Plane{Vec3::Zero(), -Vec3::UnitZ()}}});  // a ceiling at z = 0, the sphere below
+    const double z0 = -r - 1e-4 * r;
+    world.addParticle(0, 0, Vec3(0.0, 0.0, z0), Quat::Identity());
+    world.computeForces();
+    ASSERT_EQ(world.formBonds(0.01), 1u);
+    world.setGravity(Vec3(0.0, 0.0, -g));
+    world.setViscousDamping(4.0 * std::sqrt(k / mass));
+    for (int s = 0; s < 5000 && world.bondCount() == 1; ++s) world.step();
+    const double sag = z0 - world.particles().position[0].z();
+    std::printf("gravity %.4g m/s^2 (%.4g of what the bond holds): bond %s, sag %.4e m (m g / k_n A = %.4e m)\n", g,
+                g / strength, world.bondCount() == 1 ? "holds" : "broke", sag, mass * g / k);
+    EXPECT_EQ(world.bondCount(), g < strength ? 1u : 0u);
+    if (g < strength) EXPECT_NEAR(sag, mass * g / k, 1e-6 * mass * g / k);
+  }
+}
+
+}  // namespace
+}  // namespace sqdem
