@@ -535,5 +535,22 @@ TEST(Engine, SceneErrorsNameLineKeyAndWhatIsAllowed) {
   EXPECT_THROW(buildWorld(crowded), SceneError);
 }
 
+// The automatic step's bond limit (docs/bonds.md, "Time step"): with a bond stiffer than the
+// particles' Rayleigh time allows for, the scene's step is 0.2 / omega of its stiffest bond; with
+// a soft one, the Rayleigh step as without bonds.
+TEST(Engine, TheAutomaticStepResolvesTheStiffestBond) {
+  const auto withBond = [](const std::string& stiffness) {
+    return replaced(replaced(bedScene, "time_step: 2.0e-6\n", ""), "  - materials: [glass, glass]\n",
+                    "  - materials: [glass, glass]\n    bond: {normal_stiffness: " + stiffness +
+                        ", shear_stiffness: 4.0e11, tensile_strength: 1.0e6, shear_strength: 2.0e6}\n");
+  };
+  const World stiff = buildWorld(loadScene(writeScene("bond_step", withBond("1.0e12"))));
+  EXPECT_LT(stiff.bondTimeStep(), stiff.rayleighTimeStep());
+  EXPECT_EQ(stiff.timeStep(), 0.2 * stiff.bondTimeStep());
+  const World soft = buildWorld(loadScene(writeScene("bond_step", replaced(withBond("1.0e6"), "shear_stiffness: 4.0e11", "shear_stiffness: 4.0e5"))));
+  EXPECT_GT(soft.bondTimeStep(), soft.rayleighTimeStep());
+  EXPECT_EQ(soft.timeStep(), 0.2 * soft.rayleighTimeStep());
+}
+
 }  // namespace
 }  // namespace sqdem

@@ -14,7 +14,10 @@
 //     does not have;
 //   - an adhesive contact between particles of two ranks (tests/scenes/crossing_adhesion.yaml),
 //     which must break on the same step as in one process; at 3, 4 and 8 ranks some ranks own no
-//     particle.
+//     particle;
+//   - a bonded ring travelling across rank faces and the periodic face, shaken until some bonds
+//     break (tests/scenes/crossing_bonds.yaml): every contact's force (its bond's loads in it) at
+//     every step, and the bonds broken, are one process's.
 
 #include <gtest/gtest.h>
 #include <omp.h>
@@ -100,17 +103,28 @@ struct Traces {
   int steps = 0;
 };
 
+/// The scene's world, on `ranks` (one process without), with the bonds its first stage forms (as
+/// StageRunner forms them).
+World startedWorld(const Scene& scene, std::shared_ptr<Communicator> ranks = nullptr) {
+  World world = buildWorld(scene);
+  if (ranks) world.setCommunicator(std::move(ranks));
+  if (const std::optional<double> gap = scene.stages.at(0).bondGap) {
+    world.computeForces();
+    world.formBonds(*gap);
+  }
+  return world;
+}
+
 /// The scene run for its first stage's duration at this process's rank count, and on rank 0
 /// again in one process on one thread.
 Traces decomposedAndOne(const char* file) {
   const Scene scene = loadScene(std::string(SQDEM_TEST_SCENES "/") + file);
-  World world = buildWorld(scene);
-  world.setCommunicator(worldCommunicator());
+  World world = startedWorld(scene, worldCommunicator());
   const int steps = static_cast<int>(scene.stages.at(0).duration / world.timeStep());
   ContactTrace decomposed = stepAndTrace(world, steps);
   if (world.communicator().rank() != 0) return {};
   omp_set_num_threads(1);
-  World one = buildWorld(scene);
+  World one = startedWorld(scene);
   return {std::move(decomposed), stepAndTrace(one, steps), steps};
 }
 
@@ -220,6 +234,31 @@ TEST(MpiEngine, AnAdhesiveContactAcrossARankFaceBreaksOnTheSameStep) {
   EXPECT_TRUE(pulled);
   if (worldCommunicator()->size() > 1) EXPECT_TRUE(acrossRanks) << "B was owned by A's rank at some step";
   std::printf("the neck broke after step %d of %d\n", lastActing, total);
+}
+
+TEST(MpiEngine, BondsTravelWithTheirParticlesAndBreakOnTheSameStep) {
+  const Scene scene = loadScene(SQDEM_TEST_SCENES "/crossing_bonds.yaml");
+  World world = startedWorld(scene, worldCommunicator());
+  const std::size_t formed = world.bondCount();
+  const int steps = static_cast<int>(scene.stages.at(0).duration / world.timeStep());
+  const ContactTrace decomposed = stepAndTrace(world, steps);
+  const std::size_t intact = world.bondCount();
+  const long long broken = world.totalStatistics().bondsBroken;
+  if (world.communicator().rank() != 0) return;
+  omp_set_num_threads(1);
+  World one = startedWorld(scene);
+  const ContactTrace alone = stepAndTrace(one, steps);
+  expectSameTrace(decomposed, alone);
+  EXPECT_EQ(formed, 16u);  // eight around the ring, eight on the floor
+  EXPECT_EQ(intact, one.bondCount());
+  EXPECT_EQ(broken, one.totalStatistics().bondsBroken);
+  EXPECT_GT(broken, 0) << "no bond broke";
+  EXPECT_GT(intact, 0u) << "every bond broke";
+  // Some bonded pair was computed across a rank face (B a ghost) at some step.
+  bool acrossRanks = false;
+  for (const auto& [key, r] : decomposed) acrossRanks = acrossRanks || !r.bLocal;
+  if (worldCommunicator()->size() > 1) EXPECT_TRUE(acrossRanks);
+  std::printf("bonded ring, %d steps: %zu bonds formed, %lld broke, %zu intact\n", steps, formed, broken, intact);
 }
 
 }  // namespace

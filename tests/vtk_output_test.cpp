@@ -4,7 +4,9 @@
 // superquadric in its pose, g = 1 to Float32 precision, carrying its particle's values), the
 // contact network (particle pairs and wall contacts: ids, wall, point, normal, forces, overlap,
 // area, the line's ends) and the walls (polygons, index, force, torque, velocity). Frame 0 of a
-// bed without contacts still carries the contact arrays (empty), for ParaView's colour menu.
+// bed without contacts still carries the contact arrays (empty), for ParaView's colour menu. The
+// bonds (docs/bonds.md): one line per intact bond with the loads World::bonds reports, a broken
+// bond gone.
 
 #include <gtest/gtest.h>
 #include <vtkCellArray.h>
@@ -235,6 +237,72 @@ TEST_P(VtkOutput, CollectionsListTheFramesAndAnEmptyNetworkKeepsItsArrays) {
   text << pvd.rdbuf();
   EXPECT_NE(text.str().find("file=\"apart_particles_00000.vtp\""), std::string::npos);
   EXPECT_NE(text.str().find("file=\"apart_particles_00001.vtp\""), std::string::npos);
+}
+
+// Three spheres in a row on a floor, bonded to each other and to the floor, then stretched,
+// sheared and turned: the file holds each intact bond's line and loads; after one floor bond is
+// pulled past its strength, its line is gone.
+TEST(VtkBondOutput, IntactBondsWithTheirLoadsBrokenOnesGone) {
+  constexpr double r = 5e-6;
+  Domain box;
+  box.lo = Vec3::Constant(-1e-4);
+  box.hi = Vec3::Constant(1e-4);
+  World world({Superquadric::sphere(r)}, {Material{2e11, 0.3, 4700.0, 0.0, 1.0}}, box, 0.2 * r);
+  ContactModel model = world.defaultContactModel(0, 0);
+  model.bond = ParallelBond{.radiusMultiplier = 0.5, .normalStiffness = 1e17, .shearStiffness = 4e16, .tensileStrength = 50e6,
+                            .shearStrength = 80e6};
+  world.setContactModel(0, 0, model);
+  world.addWall(Wall{.surface = PlaneWall{Plane{Vec3::Zero(), Vec3::UnitZ()}}});
+  world.setTimeStep(1e-10);
+  for (int i = 0; i < 3; ++i) world.addParticle(0, 0, Vec3(i * (2.0 * r + 1e-9), 0.0, r + 1e-9), Quat::Identity());
+  world.computeForces();
+  ASSERT_EQ(world.formBonds(0.01), 5u);  // 0-1, 1-2 and each on the floor
+  ParticleStore& p = world.particles();
+  p.position[0].z() += 1e-10;
+  p.position[1] += Vec3(1e-10, 2e-10, 1e-10);
+  p.orientation[2] = Quat(Eigen::AngleAxisd(1e-5, Vec3(1.0, 2.0, 3.0).normalized()));
+  world.computeForces();
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "sqdem_test_vtk_bonds";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  VtkSeries series(dir, "bonded", {.contacts = true, .surfaceResolution = 0});
+  series.writeFrame(world);
+  const std::vector<BondReport> bonds = world.bonds();
+  ASSERT_EQ(bonds.size(), 5u);
+  const Frame f(dir / "bonded_bonds_00000.vtp");
+  ASSERT_EQ(f.data->GetNumberOfLines(), 5);
+  vtkNew<vtkIdList> line;
+  int onWall = 0;
+  for (std::size_t k = 0; k < bonds.size(); ++k) {
+    const BondReport& b = bonds[k];
+    const ContactView c(world.interactions().store(), b.contact);
+    f.data->GetCellPoints(static_cast<vtkIdType>(k), line);
+    EXPECT_EQ(f.vertex(line->GetId(0)), p.position[c.a()]);
+    EXPECT_EQ(f.vertex(line->GetId(1)), c.onWall() ? b.centre : p.position[c.b()]);
+    EXPECT_EQ(f.cell("id_a")->GetComponent(k, 0), p.id[c.a()]);
+    EXPECT_EQ(f.cell("id_b")->GetComponent(k, 0), c.onWall() ? -1.0 : p.id[c.b()]);
+    EXPECT_EQ(f.cell("wall")->GetComponent(k, 0), c.onWall() ? 0.0 : -1.0);
+    onWall += c.onWall() ? 1 : 0;
+    EXPECT_EQ(tuple3(f.cell("centre"), k), b.centre);
+    EXPECT_EQ(f.cell("normal_force")->GetComponent(k, 0), b.loads.normalForce);
+    EXPECT_EQ(tuple3(f.cell("shear_force"), k), b.loads.shearForce);
+    EXPECT_EQ(tuple3(f.cell("moment"), k), b.loads.moment);
+    EXPECT_EQ(f.cell("tensile_stress")->GetComponent(k, 0), b.loads.tensileStress);
+    EXPECT_EQ(f.cell("shear_stress")->GetComponent(k, 0), b.loads.shearStress);
+    EXPECT_EQ(f.cell("utilisation")->GetComponent(k, 0), b.utilisation);
+    EXPECT_GT(b.utilisation, 0.0);
+    EXPECT_LT(b.utilisation, 1.0);
+  }
+  EXPECT_EQ(onWall, 3);
+  // Particle 0 lifted 1e-9 m more: its floor bond (u_c = sigma_c / k_n = 5e-10 m) breaks, its
+  // bond to particle 1 holds (sheared by 1e-9 m: tau = k_s u_s = 40 MPa < 80 MPa).
+  p.position[0].z() += 1e-9;
+  world.computeForces();
+  series.writeFrame(world);
+  const Frame after(dir / "bonded_bonds_00001.vtp");
+  ASSERT_EQ(after.data->GetNumberOfLines(), 4);
+  for (vtkIdType k = 0; k < 4; ++k) EXPECT_FALSE(after.cell("id_a")->GetComponent(k, 0) == 0.0 && after.cell("wall")->GetComponent(k, 0) == 0.0) << k;
+  EXPECT_EQ(world.totalStatistics().bondsBroken, 1);
 }
 
 INSTANTIATE_TEST_SUITE_P(Compressions, VtkOutput, testing::Values(VtkCompression::ZLib, VtkCompression::LZ4, VtkCompression::None),

@@ -10,6 +10,11 @@
 namespace sqdem {
 namespace {
 
+/// Body A of contact k.
+Pose bondPoseA(const InteractionScene& scene, const ContactStore& s, std::uint32_t k) {
+  return {scene.particles.position[s.a[k]], scene.particles.orientation[s.a[k]]};
+}
+
 /// Body B of contact k as a bond sees it: a particle's pose, or a plane's point unturned (planes
 /// translate only).
 Pose bondPoseB(const InteractionScene& scene, const ContactStore& s, std::uint32_t k) {
@@ -53,12 +58,11 @@ std::size_t Interactions::formBonds(const InteractionScene& scene, double gapRat
 void Interactions::addBondLoads(const InteractionScene& scene, std::span<const std::uint32_t> members, const ParallelBond& bond,
                                 ContactStatistics& statistics) {
   ContactStore& s = store_;
-  const ParticleStore& p = scene.particles;
   long long broken = 0;
   for (const std::uint32_t k : members) {
     BondRecord& record = s.bond[k];
     if (!record.intact()) continue;
-    const BondPlace place = bondPlace(record.rest, {p.position[s.a[k]], p.orientation[s.a[k]]}, bondPoseB(scene, s, k));
+    const BondPlace place = bondPlace(record.rest, bondPoseA(scene, s, k), bondPoseB(scene, s, k));
     const BondLoads loads = bondLoads(bond, BondSection(record.radius), place.deformation);
     if (loads.breaks(bond)) {
       record.state = BondRecord::State::Broken;
@@ -76,9 +80,24 @@ void Interactions::addBondLoads(const InteractionScene& scene, std::span<const s
   statistics.bondsBroken += broken;
 }
 
-std::size_t Interactions::bondCount() const {
-  if (!store_.withBonds) return 0;
-  return static_cast<std::size_t>(std::ranges::count_if(store_.bond, [](const BondRecord& b) { return b.intact(); }));
+std::size_t Interactions::bondCount() const { return store_.intactBonds(); }
+
+std::vector<BondReport> Interactions::bonds(const InteractionScene& scene) const {
+  const ContactStore& s = store_;
+  std::vector<BondReport> reports;
+  for (const Group& group : groups_) {
+    const std::optional<ParallelBond>& bond = scene.models[group.model].bond;
+    if (!bond) continue;
+    for (const std::uint32_t k : group.members) {
+      if (!s.bond[k].intact()) continue;
+      const BondPlace place = bondPlace(s.bond[k].rest, bondPoseA(scene, s, k), bondPoseB(scene, s, k));
+      const BondLoads loads = bondLoads(*bond, BondSection(s.bond[k].radius), place.deformation);
+      reports.push_back({k, place.centre, loads,
+                         std::max(loads.tensileStress / bond->tensileStrength, loads.shearStress / bond->shearStrength)});
+    }
+  }
+  std::ranges::sort(reports, {}, [&s](const BondReport& r) { return s.key(r.contact); });
+  return reports;
 }
 
 }  // namespace sqdem

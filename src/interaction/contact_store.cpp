@@ -1,5 +1,6 @@
 #include "sqdem/interaction/contact_store.hpp"
 
+#include <algorithm>
 #include <type_traits>
 #include <utility>
 
@@ -44,6 +45,10 @@ void ContactStore::add(const ContactKey& key, std::uint32_t slotA, std::uint32_t
   b[k] = slotB;
   wallImage[k] = wallImageOffset;
   normal[k] = Vec3::UnitZ();
+}
+
+std::size_t ContactStore::intactBonds() const {
+  return static_cast<std::size_t>(std::ranges::count_if(bond, [](const BondRecord& b) { return b.intact(); }));
 }
 
 void ContactStore::reset(std::size_t k) {

@@ -62,8 +62,7 @@ std::size_t Interactions::setCandidates(const std::vector<CandidateKey>& candida
   remote_.clear();
   regroup(scene);
   indexInvolvement(scene.particles.size(), ghostOwner);
-  const auto intact = [](const ContactStore& s) { return std::ranges::count_if(s.bond, [](const BondRecord& b) { return b.intact(); }); };
-  return static_cast<std::size_t>(intact(previous) - intact(store_));
+  return previous.intactBonds() - store_.intactBonds();
 }
 
 void Interactions::removeLeaving(const std::vector<std::uint8_t>& leaving) {

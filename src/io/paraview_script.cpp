@@ -18,7 +18,7 @@ from paraview.simple import *
 
 here, script = os.path.split(os.path.abspath(__file__))
 NAME = script[:-len('_view.py')]
-SURFACES, CONTACTS, WALLS = @SURFACES, @CONTACTS, @WALLS
+SURFACES, CONTACTS, WALLS, BONDS = @SURFACES, @CONTACTS, @WALLS, @BONDS
 
 
 def series(kind):
@@ -45,6 +45,13 @@ if CONTACTS:
     contacts = Show(series('contacts'), view)
     ColorBy(contacts, ('CELLS', 'normal_force'))
     contacts.LineWidth = 2.0
+if BONDS:
+    bonds = Show(series('bonds'), view)
+    ColorBy(bonds, ('CELLS', 'utilisation'))
+    bonds.LookupTable = GetColorTransferFunction('utilisation')
+    bonds.LookupTable.ApplyPreset('Inferno (matplotlib)', True)
+    bonds.LookupTable.RescaleTransferFunction(0.0, 1.0)
+    bonds.LineWidth = 3.0
 
 scene = GetAnimationScene()
 scene.UpdateAnimationUsingDataTimeSteps()
@@ -75,6 +82,7 @@ if '--png' in sys.argv:
   replace("@SURFACES", flag(series.surfaces));
   replace("@CONTACTS", flag(series.contacts));
   replace("@WALLS", flag(series.walls));
+  replace("@BONDS", flag(series.bonds));
   writeFileAtomically(directory / (name + "_view.py"), text);
 }
 

@@ -140,6 +140,39 @@ PolyData contactFrame(const World& world) {
   return d;
 }
 
+/// One line per intact bond (docs/bonds.md): between the centres, or from the centre to the
+/// bond's centre on a wall; broken bonds are gone.
+PolyData bondFrame(const World& world) {
+  const ParticleStore& p = world.particles();
+  const ContactStore& s = world.interactions().store();
+  PolyData d;
+  d.cells = PolyData::Cells::Lines;
+  DataArray idA = int64("id_a"), idB = int64("id_b"), wall = int32("wall"), centre = float64("centre", 3),
+            normalForce = float64("normal_force", 1), shearForce = float64("shear_force", 3), moment = float64("moment", 3),
+            tensile = float64("tensile_stress", 1), shear = float64("shear_stress", 1), utilisation = float64("utilisation", 1);
+  for (const BondReport& r : world.bonds()) {
+    const ContactView c(s, r.contact);
+    d.points.push(p.position[c.a()]);
+    d.points.push(c.onWall() ? r.centre : p.position[c.b()]);
+    const auto n = static_cast<std::int64_t>(d.pointCount());
+    d.connectivity.insert(d.connectivity.end(), {n - 2, n - 1});
+    d.endCell();
+    idA.push(static_cast<double>(p.id[c.a()]));
+    idB.push(c.onWall() ? -1.0 : static_cast<double>(p.id[c.b()]));
+    wall.push(c.onWall() ? static_cast<double>(c.wall()) : -1.0);
+    centre.push(r.centre);
+    normalForce.push(r.loads.normalForce);
+    shearForce.push(r.loads.shearForce);
+    moment.push(r.loads.moment);
+    tensile.push(r.loads.tensileStress);
+    shear.push(r.loads.shearStress);
+    utilisation.push(r.utilisation);
+  }
+  keep(d.cellData, idA, idB, wall, centre, normalForce, shearForce, moment, tensile, shear, utilisation);
+  d.cellScalars = "utilisation";
+  return d;
+}
+
 /// The walls' surfaces within the box.
 PolyData wallFrame(const World& world) {
   const WallSurfaces s = wallSurfaces(world.walls(), world.meshes(), world.domain());
@@ -170,12 +203,14 @@ void VtkSeries::writeFrame(const World& world) {
   const std::vector<int> z = coordinationNumbers(world);
   const double t = world.time();
   const Communicator& ranks = world.communicator();
+  const bool bonded = world.interactions().store().withBonds;
   if (particles_.frames.empty() && ranks.rank() == 0) {
-    writeParaViewScript(directory_, name_, {options_.surfaceResolution > 0, options_.contacts, !world.walls().empty()});
+    writeParaViewScript(directory_, name_, {options_.surfaceResolution > 0, options_.contacts, !world.walls().empty(), bonded});
   }
   write(particles_, t, particleFrame(world, z), ranks);
   if (options_.surfaceResolution > 0) write(surfaces_, t, surfaceFrame(world, z, options_.surfaceResolution), ranks);
   if (options_.contacts) write(contacts_, t, contactFrame(world), ranks);
+  if (bonded) write(bonds_, t, bondFrame(world), ranks);
   if (!world.walls().empty() && ranks.rank() == 0) write(walls_, t, wallFrame(world), SerialCommunicator());  // global bodies
 }
 

@@ -262,7 +262,7 @@ double rayleighTime(const Scene& scene, const World& world) {
 }
 
 double automaticTimeStep(const Scene& scene, const World& world, double fraction) {
-  double dt = fraction * world.rayleighTimeStep() / std::sqrt(smallestStiffnessScale(scene));
+  double dt = std::min(fraction * world.rayleighTimeStep() / std::sqrt(smallestStiffnessScale(scene)), fraction * world.bondTimeStep());
   if (scene.impactVelocity > 0.0) dt = std::min(dt, world.hertzTimeStep(scene.impactVelocity, scene.stepsPerCollision));
   return dt;
 }

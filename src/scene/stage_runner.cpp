@@ -51,7 +51,7 @@ RunPlan planRun(const Scene& scene, const World& world) {
   char text[320];
   if (scene.timeStep && dt > stable) {
     std::snprintf(text, sizeof text, "'time_step': %.4g s is %.3g x the stable estimate %.4g s (the automatic step: "
-                  "0.2 x the Rayleigh time of the smallest particle, at most a declared impact's collision time over "
+                  "0.2 x the Rayleigh time of the smallest particle, at most 0.2 / omega of the stiffest bond and a declared impact's collision time over "
                   "steps_per_collision)", dt, dt / stable, stable);
     if (dt > 5.0 * stable) throw SceneError(scene.path + ": " + text + "; at most 5 x is accepted");
     plan.warnings.push_back(std::string(text) + "; the run may be unstable");

@@ -46,8 +46,15 @@ World::World(std::vector<Superquadric> shapes, std::vector<Material> materials, 
 }
 
 void World::setSphereOrientations(bool advanced) {
+  sphereOrientations_ = advanced;
+  fitTurns();
+}
+
+void World::fitTurns() {
+  // A bond is fixed in its bodies' frames (bond_frame.hpp): with bonds, a sphere's turn matters.
+  const bool bonded = std::ranges::any_of(models_, [](const ContactModel& m) { return m.bond.has_value(); });
   turns_.clear();
-  for (const Superquadric& s : shapes_) turns_.push_back(advanced || !s.isSphere());
+  for (const Superquadric& s : shapes_) turns_.push_back(sphereOrientations_ || bonded || !s.isSphere());
 }
 
 void World::setCommunicator(std::shared_ptr<const Communicator> communicator) {
@@ -94,6 +101,7 @@ void World::setContactModel(std::uint32_t ma, std::uint32_t mb, const ContactMod
   m.tangential.elliptic = m.tangential.elliptic && m.curvatures;  // the ellipse needs the curvatures
   models_.at(ma * n + mb) = models_.at(mb * n + ma) = m;
   modelSet_[ma * n + mb] = modelSet_[mb * n + ma] = true;
+  fitTurns();
   interactions_.fitStore(interactionScene());
 }
 
@@ -459,6 +467,22 @@ double World::rayleighTimeStep() const {
     const double G = m.youngsModulus / (2.0 * (1.0 + m.poissonRatio));
     const Vec3 h = shapes_[particles_.shape[i]].halfExtents();
     dt = std::min(dt, sqdem::rayleighTimeStep(h.minCoeff(), m.density, G, m.poissonRatio));
+  }
+  return communicator_->min(dt);
+}
+
+double World::bondTimeStep() const {
+  double dt = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < particles_.size(); ++i) {
+    const Superquadric& shape = shapes_[particles_.shape[i]];
+    for (std::uint32_t other = 0; other < materials_.size(); ++other) {
+      const std::optional<ParallelBond>& bond = model(particles_.material[i], other).bond;
+      if (!bond) continue;
+      const BondSection section(bond->radiusMultiplier * shape.volumeEquivalentRadius());
+      const double omega = bondAngularFrequency(*bond, section, particles_.mass[i], particles_.inertia[i].minCoeff(),
+                                                shape.halfExtents().maxCoeff());
+      dt = std::min(dt, 1.0 / omega);
+    }
   }
   return communicator_->min(dt);
 }

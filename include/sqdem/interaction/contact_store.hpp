@@ -104,7 +104,7 @@ struct ContactStore {
 
   std::vector<std::uint8_t> acting;  ///< carried force in the last computation
   std::vector<Vec3> force;           ///< on B (N); A receives -force
-  std::vector<Vec3> moment;          ///< pure moment on B (N m), withRolling only
+  std::vector<Vec3> moment;          ///< pure moment on B (N m), withMoment() only
   std::vector<NormalLoad> load;
   std::vector<ContactEnergy> energy;  ///< withEnergy only
   std::vector<BondRecord> bond;       ///< withBonds only
@@ -118,6 +118,8 @@ struct ContactStore {
   bool withMoment() const { return withRolling || withBonds; }
 
   std::size_t size() const { return a.size(); }
+  /// The bonds that hold (none without withBonds).
+  std::size_t intactBonds() const;
   bool onWall(std::size_t k) const { return (b[k] & wallFlag) != 0; }
   ContactKey key(std::size_t k) const { return {(std::uint64_t{idA[k]} << 32) | idB[k], feature[k]}; }
 

@@ -137,6 +137,15 @@ struct ContactEllipse {
   Vec3 majorAxis = Vec3::Zero();  ///< unit, in the tangent plane (world frame); zero for a circle
 };
 
+/// An intact bond as the bodies' current poses deform it (Interactions::bonds).
+struct BondReport {
+  std::uint32_t contact = 0;   ///< its contact's store slot
+  Vec3 centre = Vec3::Zero();  ///< where its force acts (m)
+  BondLoads loads;             ///< on B (parallel_bond.hpp)
+  /// max(sigma / sigma_c, tau / tau_c): how near it is to breaking (< 1 while intact).
+  double utilisation = 0.0;
+};
+
 /// An empty store with the optional arrays the scene's contact models need.
 ContactStore emptyStore(const InteractionScene& scene);
 
@@ -175,6 +184,9 @@ class Interactions {
   std::size_t formBonds(const InteractionScene& scene, double gapRatio);
   /// This process's intact bonds.
   std::size_t bondCount() const;
+  /// This process's intact bonds with their loads at the current poses, in key order (computed
+  /// when asked, as the next computation would find them).
+  std::vector<BondReport> bonds(const InteractionScene& scene) const;
   /// Whether some group culls separated pairs by the particles' speed bounds (the iterative kinds).
   bool cullsBySpeed() const;
   /// Team work: per particle, F = m (g - c v) plus its contacts' loads, and the torques; per

@@ -7,7 +7,9 @@
 //                         geometry/superquadric_tessellation.hpp; 0: not written);
 //   <name>_contacts.pvd   one line per contact (output.contacts): between the two centres, or
 //                         from the centre to the contact point on a wall;
-//   <name>_walls.pvd      the walls' surfaces within the box (io/wall_surfaces.hpp).
+//   <name>_walls.pvd      the walls' surfaces within the box (io/wall_surfaces.hpp);
+//   <name>_bonds.pvd      one line per intact bond (a scene with bonds): between the two
+//                         centres, or from the centre to the bond's centre on a wall.
 // With the first frame, <name>_view.py (paraview_script.hpp) opens them in ParaView.
 // Every file is written atomically; a .pvd is rewritten after each frame so it lists complete
 // frames only. Across MPI ranks each frame is a piece per rank, `<name>_<kind>_NNNNN_<rank>.vtp`
@@ -27,6 +29,10 @@
 // particles), point (m), normal (unit, from A to B), normal_force (N, > 0 compressive),
 // normal_force_vector, tangential_force (N, acting on B; A receives the opposite),
 // overlap (m, < 0 a gap), area (m^2).
+// Bond cell data (the bond's loads at the frame's poses, docs/bonds.md): id_a, id_b, wall (as
+// for contacts), centre (m), normal_force (N, > 0 in tension), shear_force (N, on B), moment
+// (N m, twisting + bending, on B), tensile_stress and shear_stress (Pa, Eq. 11's sigma and tau),
+// utilisation (max(sigma / sigma_c, tau / tau_c), < 1).
 // Wall cell data: wall (its index in the scene), force (N, what the particles exert on it),
 // torque (N m, about its reference point), velocity (m/s).
 
@@ -63,7 +69,7 @@ class VtkSeries {
   std::filesystem::path directory_;
   std::string name_;
   VtkOutputOptions options_;
-  Series particles_{"particles", {}}, surfaces_{"surfaces", {}}, contacts_{"contacts", {}}, walls_{"walls", {}};
+  Series particles_{"particles", {}}, surfaces_{"surfaces", {}}, contacts_{"contacts", {}}, walls_{"walls", {}}, bonds_{"bonds", {}};
 };
 
 }  // namespace sqdem

@@ -11,6 +11,7 @@
 //   sigma = F_n / A + |M_b| R / I >= sigma_c   or   tau = |F_s| / A + |M_t| R / J >= tau_c.
 // Its stored energy is (1/2)(k_n A u_n^2 + k_s A |u_s|^2 + k_s J theta_t^2 + k_n I |theta_b|^2).
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -63,6 +64,7 @@ struct BondLoads {
   Vec3 force = Vec3::Zero();         ///< F_n n + F_s (N)
   Vec3 moment = Vec3::Zero();        ///< M_t n + M_b (N m), besides the force's moment
   double normalForce = 0.0;          ///< F_n (N), > 0 in tension
+  Vec3 shearForce = Vec3::Zero();    ///< F_s (N)
   double tensileStress = 0.0;        ///< sigma (Pa)
   double shearStress = 0.0;          ///< tau (Pa)
   double energy = 0.0;               ///< stored elastic energy (J)
@@ -78,6 +80,7 @@ inline BondLoads bondLoads(const ParallelBond& bond, const BondSection& s, const
   const Vec3 Fs = -ks * s.area * d.shear, Mb = -kn * s.inertia * d.bending;
   BondLoads l;
   l.normalForce = Fn;
+  l.shearForce = Fs;
   l.force = -Fn * d.axis + Fs;  // a stretched bond pulls B back towards A
   l.moment = Mt * d.axis + Mb;
   l.tensileStress = Fn / s.area + Mb.norm() * s.radius / s.inertia;
@@ -85,6 +88,17 @@ inline BondLoads bondLoads(const ParallelBond& bond, const BondSection& s, const
   l.energy = 0.5 * (kn * s.area * d.extension * d.extension + ks * s.area * d.shear.squaredNorm() +
                     ks * s.polar * d.twist * d.twist + kn * s.inertia * d.bending.squaredNorm());
   return l;
+}
+
+/// The fastest angular frequency (rad/s) of a body of mass m, smallest principal moment of inertia
+/// J_min and largest half-extent l held by one bond of section s (docs/bonds.md, "Time step"):
+/// its translation against k A (the stiffer of k_n and k_s), its turn against the shear spring at
+/// lever l plus the stiffer of bending (k_n I) and twisting (k_s J).
+inline double bondAngularFrequency(const ParallelBond& bond, const BondSection& s, double mass, double smallestInertia, double lever) {
+  const double kn = bond.normalStiffness, ks = bond.shearStiffness;
+  const double translation = std::max(kn, ks) * s.area / mass;
+  const double rotation = (ks * s.area * lever * lever + std::max(kn * s.inertia, ks * s.polar)) / smallestInertia;
+  return std::sqrt(std::max(translation, rotation));
 }
 
 }  // namespace sqdem

@@ -16,8 +16,9 @@ World buildWorld(const Scene& scene);
 /// stiffness (the scene's smallest reduced_stiffness).
 double rayleighTime(const Scene& scene, const World& world);
 
-/// The automatic time step of a built world (s): `fraction` x rayleighTime, and with a declared
-/// impact_velocity at most the Hertz collision time over steps_per_collision.
+/// The automatic time step of a built world (s): `fraction` x rayleighTime, with bonds at most
+/// `fraction` x World::bondTimeStep, and with a declared impact_velocity at most the Hertz
+/// collision time over steps_per_collision.
 double automaticTimeStep(const Scene& scene, const World& world, double fraction);
 
 }  // namespace sqdem

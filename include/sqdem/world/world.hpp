@@ -103,8 +103,9 @@ class World {
 
   void setGravity(const Vec3& g) { gravity_ = g; }
   /// Whether a step advances spheres' orientations (default: no). Nothing a sphere does depends
-  /// on its orientation (its contacts are round, its inertia isotropic); only the output's
-  /// quaternions show it, and turning it costs most of a sphere's integration.
+  /// on its orientation (its contacts are round, its inertia isotropic) unless a contact model
+  /// has a bond (then they always turn: bond_frame.hpp); otherwise only the output's quaternions
+  /// show it, and turning it costs most of a sphere's integration.
   void setSphereOrientations(bool advanced);
   const Vec3& gravity() const { return gravity_; }
   /// Re-order the particle slots along a Hilbert curve every `rebuilds` neighbour-list builds
@@ -170,6 +171,8 @@ class World {
   const Interactions& interactions() const { return interactions_; }
   /// Every stored contact's ellipse at the current state, by store slot (Interactions::ellipses).
   std::vector<ContactEllipse> contactEllipses() const { return interactions_.ellipses(interactionScene()); }
+  /// This process's intact bonds and their loads at the current state (Interactions::bonds).
+  std::vector<BondReport> bonds() const { return interactions_.bonds(interactionScene()); }
   /// The loads of the last force computation that other ranks' contacts put on this rank's
   /// particles, one per Interactions::remoteContacts() entry (empty in one process).
   const std::vector<LoadOnB>& remoteLoads() const { return remoteLoadsNow_; }
@@ -211,6 +214,10 @@ class World {
   /// impact speed v (m/s), on volume-equivalent spheres with the pair's (possibly reduced) E*,
   /// divided by stepsPerCollision (s).
   double hertzTimeStep(double speed, double stepsPerCollision) const;
+  /// 1 / omega of the fastest bond a particle could hold (bondAngularFrequency, with the bond's
+  /// radius from the particle's own volume radius) over every particle and every material its
+  /// material's model bonds to (s); infinite without bonds. Scenes use a fraction of it.
+  double bondTimeStep() const;
 
  private:
   /// Runs body(team) on every thread of a new Team (team.hpp), rethrows what its serial parts
@@ -219,6 +226,8 @@ class World {
   void inTeam(Body&& body);
   /// Throws std::logic_error when a material pair has no contact model.
   void requireModels() const;
+  /// turns_ from the shapes, setSphereOrientations and the models' bonds.
+  void fitTurns();
   /// Serial part of a force computation (the master's, team.hpp): the broad phase when some
   /// particle `moved` more than half the skin (a decision reduced over ranks) or a wall did,
   /// else the ghosts refreshed; the interactions' records fitted.
@@ -273,7 +282,8 @@ class World {
   std::vector<MeshFeatures> meshes_;
   std::vector<MeshTree> meshTrees_;       ///< meshes_[i]'s candidate search
   std::vector<Vec3> wallReference_;       ///< wall points at the last candidate build
-  std::vector<std::uint8_t> turns_;       ///< per shape: whether a drift advances the orientation
+  std::vector<std::uint8_t> turns_;       ///< per shape: whether a drift advances the orientation (fitTurns)
+  bool sphereOrientations_ = false;       ///< setSphereOrientations
   Interactions interactions_;
   ContactStatistics statistics_;
   StepTiming timing_;
