@@ -2,7 +2,7 @@
 // closed forms (Potyondy & Cundall 2004, Eqs. 10-11), its breakage at the strength, the series
 // stiffness of a bonded chain of spheres and of ellipsoids, the energy of an undamped bonded
 // pair, a particle bonded to a plane under gravity, and the automatic time step's bond limit on a
-// bonded block, and bonds through a checkpoint.
+// bonded block, bonds through a checkpoint, and the energy ledger's bond terms.
 
 #include <gtest/gtest.h>
 #include <omp.h>
@@ -295,6 +295,55 @@ TEST(BondEngine, BondsContinueThroughACheckpoint) {
     EXPECT_EQ(a[k].loads.force, b[k].loads.force);
     EXPECT_EQ(a[k].loads.moment, b[k].loads.moment);
   }
+}
+
+// The energy ledger with bonds (world/energy_ledger.hpp): a sphere hanging from a plane by a bond,
+// released unstretched under a gravity 0.52 of what the bond holds and undamped: it swings down
+// to about twice its static sag, past u_c = sigma_c / k_n, and the bond breaks. Before the break
+// the bond stores U = k_n A u^2 / 2 and dissipates nothing (D_bonds only the quadrature error);
+// as it breaks, what it held is released: D_bonds = k_n A u_c^2 / 2 = sigma_c^2 A / (2 k_n), to
+// twice the stretch of the last step. Throughout, the work of gravity is the kinetic energy,
+// U_bonds and D_bonds but for velocity Verlet's own term (|F_n|^2 - |F_0|^2) dt^2 / 8m (the
+// ledger's residual, contact_work.hpp), to 1e-9 of the work.
+TEST(BondEngine, TheLedgerStoresABondsEnergyAndReleasesItAsItBreaks) {
+  omp_set_num_threads(1);
+  const double mass = rho * 4.0 / 3.0 * std::numbers::pi * r * r * r, k = bond.normalStiffness * section.area;
+  const double uc = bond.tensileStrength / bond.normalStiffness, released = 0.5 * k * uc * uc;
+  World world = bondedWorld(Superquadric::sphere(r));
+  world.enableEnergyLedger();
+  world.addWall(Wall{.surface = PlaneWall{Plane{Vec3::Zero(), -Vec3::UnitZ()}}});
+  world.addParticle(0, 0, Vec3(0.0, 0.0, -r - 1e-4 * r), Quat::Identity());
+  world.setGravity(Vec3(0.0, 0.0, -0.52 * bond.tensileStrength * section.area / mass));
+  world.setTimeStep(1e-11);  // omega dt = 0.009
+  world.computeForces();
+  ASSERT_EQ(world.formBonds(0.01), 1u);
+  const double F0 = world.particles().force[0].squaredNorm(), dt = world.timeStep();
+  double lastStretch = 0.0, stretch = 0.0, worstResidual = 0.0, heldDissipation = 0.0;
+  int steps = 0;
+  for (; steps < 50000 && world.bondCount() == 1; ++steps) {
+    world.step();
+    const EnergyLedger& e = *world.energyLedger();
+    const double verlet = (world.particles().force[0].squaredNorm() - F0) * dt * dt / (8.0 * mass);
+    worstResidual = std::max(worstResidual, std::abs(e.residual(world.kineticEnergy()) + verlet));
+    if (world.bondCount() == 1) {
+      lastStretch = stretch;
+      stretch = world.bonds().at(0).loads.normalForce / k;
+      EXPECT_NEAR(e.bondStored, 0.5 * k * stretch * stretch, 1e-12 * released);
+      heldDissipation = std::max(heldDissipation, std::abs(e.bondDissipation()));
+    }
+  }
+  ASSERT_EQ(world.bondCount(), 0u) << "the bond held";
+  const EnergyLedger& e = *world.energyLedger();
+  worstResidual /= e.gravity;
+  const double increment = stretch - lastStretch;  // the stretch of the last steps before the break
+  std::printf("bond broke after %d steps: D_bonds %.6e J, sigma_c^2 A / 2 k_n %.6e J (%.2e off; the last step stretched "
+              "it by %.2e u_c); held: |D_bonds| <= %.2e of it; residual less Verlet's term <= %.2e of the work of gravity\n",
+              steps, e.bondDissipation(), released, e.bondDissipation() / released - 1.0, increment / uc,
+              heldDissipation / released, worstResidual);
+  EXPECT_EQ(e.bondStored, 0.0);
+  EXPECT_NEAR(e.bondDissipation(), released, 2.0 * increment / uc * released);
+  EXPECT_LT(heldDissipation, 1e-6 * released);
+  EXPECT_LT(worstResidual, 1e-9);
 }
 
 }  // namespace

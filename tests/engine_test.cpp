@@ -506,8 +506,7 @@ TEST(Engine, SceneErrorsNameLineKeyAndWhatIsAllowed) {
   expectSceneError(withInteraction("    normal: elliptic_jkr\n    surface_energy: -0.1\n"),
                    "'interactions[0].surface_energy': must be > 0 (J/m^2, gamma; W = 2 gamma)");
   expectSceneError(withInteraction("    restitution: 0\n"), "'interactions[0].restitution': must be in (0, 1]");
-  // Bonds (docs/bonds.md): their keys, a stage forming them without any, a gap beyond the skin,
-  // and the energy ledger, which does not account them yet.
+  // Bonds (docs/bonds.md): their keys, a stage forming them without any, a gap beyond the skin.
   const std::string bond = "    bond: {normal_stiffness: 1.0e12, shear_stiffness: 4.0e11, tensile_strength: 1.0e6, shear_strength: 2.0e6}\n";
   expectSceneError(withInteraction("    bond: {normal_stiffness: 1.0e12, shear_stiffness: 4.0e11, tensile_strength: 1.0e6}\n"),
                    "'interactions[0].bond.shear_strength': missing");
@@ -521,8 +520,6 @@ TEST(Engine, SceneErrorsNameLineKeyAndWhatIsAllowed) {
                    "'stages[0].form_bonds': no interaction has a bond");
   expectSceneError(replaced(withInteraction(bond), "{name: settle, duration: 0.2}", "{name: settle, duration: 0.2, form_bonds: {gap: -1}}"),
                    "'stages[0].form_bonds.gap': must be >= 0");
-  expectSceneError(replaced(withInteraction(bond), "stages:", "output: {energy: true}\nstages:"),
-                   "'output.energy': the energy ledger does not account bonds yet; interactions[0] has one");
   EXPECT_THROW(buildWorld(loadScene(writeScene("bond_gap", replaced(withInteraction(bond), "{name: settle, duration: 0.2}",
                                                                     "{name: settle, duration: 0.2, form_bonds: {gap: 5}}")))),
                SceneError);

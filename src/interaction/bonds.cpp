@@ -22,6 +22,21 @@ Pose bondPoseB(const InteractionScene& scene, const ContactStore& s, std::uint32
   return {scene.particles.position[s.b[k]], scene.particles.orientation[s.b[k]]};
 }
 
+/// Velocity of B's material point at x minus A's (m/s): a plane wall's surface velocity for B.
+Vec3 relativeVelocity(const InteractionScene& scene, const ContactStore& s, std::uint32_t k, const Vec3& x) {
+  const ParticleStore& p = scene.particles;
+  const std::uint32_t a = s.a[k], b = s.b[k];
+  const Vec3 velocityA = p.velocity[a] + p.angularVelocity[a].cross(x - p.position[a]);
+  if (s.onWall(k)) return scene.walls[b & ~wallFlag].surfaceVelocity(x) - velocityA;
+  return p.velocity[b] + p.angularVelocity[b].cross(x - p.position[b]) - velocityA;
+}
+
+/// Angular velocity of B minus A's (rad/s): a plane wall does not turn.
+Vec3 relativeSpin(const InteractionScene& scene, const ContactStore& s, std::uint32_t k) {
+  const ParticleStore& p = scene.particles;
+  return (s.onWall(k) ? Vec3::Zero() : p.angularVelocity[s.b[k]]) - p.angularVelocity[s.a[k]];
+}
+
 }  // namespace
 
 std::size_t Interactions::formBonds(const InteractionScene& scene, double gapRatio) {
@@ -47,8 +62,9 @@ std::size_t Interactions::formBonds(const InteractionScene& scene, double gapRat
         r = std::min(r, B.volumeEquivalentRadius());
       }
       if (!g.converged() || -g.overlap > gapRatio * r) continue;
-      s.bond[k] = {BondRest::formed(poseA, poseB, 0.5 * (g.pointA + g.pointB), g.normal), model.bond->radiusMultiplier * r,
-                   BondRecord::State::Intact};
+      s.bond[k] = {.rest = BondRest::formed(poseA, poseB, 0.5 * (g.pointA + g.pointB), g.normal),
+                   .radius = model.bond->radiusMultiplier * r,
+                   .state = BondRecord::State::Intact};
       ++formed;
     }
   }
@@ -63,18 +79,28 @@ void Interactions::addBondLoads(const InteractionScene& scene, std::span<const s
     BondRecord& record = s.bond[k];
     if (!record.intact()) continue;
     const BondPlace place = bondPlace(record.rest, bondPoseA(scene, s, k), bondPoseB(scene, s, k));
-    const BondLoads loads = bondLoads(bond, BondSection(record.radius), place.deformation);
+    BondLoads loads = bondLoads(bond, BondSection(record.radius), place.deformation);
     if (loads.breaks(bond)) {
       record.state = BondRecord::State::Broken;
+      loads = {};
       ++broken;
-      continue;
+    } else {
+      // The bond's force acts at its centre: about the contact point, its moment joins the pure
+      // moment (reduction.cpp sums (point - x) x force + moment).
+      if (!s.acting[k]) s.point[k] = place.centre;
+      s.moment[k] += (place.centre - s.point[k]).cross(loads.force) + loads.moment;
+      s.force[k] += loads.force;
+      s.acting[k] = 1;
     }
-    // The bond's force acts at its centre: about the contact point, its moment joins the pure
-    // moment (reduction.cpp sums (point - x) x force + moment).
-    if (!s.acting[k]) s.point[k] = place.centre;
-    s.moment[k] += (place.centre - s.point[k]).cross(loads.force) + loads.moment;
-    s.force[k] += loads.force;
-    s.acting[k] = 1;
+    if (s.withEnergy) {
+      // Trapezoidal in the loads with the drift's velocities, as the contacts' work
+      // (contact_work.hpp), at the bond's centre: what the bodies lost to the bond.
+      const Vec3 velocity = relativeVelocity(scene, s, k, place.centre), spin = relativeSpin(scene, s, k);
+      s.energy[k].bond = -0.5 * scene.dt * ((record.force + loads.force).dot(velocity) + (record.moment + loads.moment).dot(spin));
+      s.energy[k].bondStored = loads.energy;
+    }
+    record.force = loads.force;
+    record.moment = loads.moment;
   }
 #pragma omp critical(sqdem_contact_statistics)
   statistics.bondsBroken += broken;

@@ -194,8 +194,10 @@ void groupKernel(std::span<const std::uint32_t> members, const ContactModel& pai
   for (std::ptrdiff_t m = 0; m < count; ++m) {
     const std::uint32_t k = members[m];
     if (m + ContactStore::prefetchAhead < count) s.prefetch(members[m + ContactStore::prefetchAhead]);
-    [[maybe_unused]] const detail::ContactLoad before = Ledger ? detail::ContactLoad{s.normal[k], s.force[k], s.load[k]}
-                                                               : detail::ContactLoad{};
+    // The ledger's load before the step: the law's (the bond's part is the bond's work, bonds.cpp).
+    [[maybe_unused]] const detail::ContactLoad before =
+        Ledger ? detail::ContactLoad{s.normal[k], s.withBonds ? Vec3(s.force[k] - s.bond[k].force) : s.force[k], s.load[k]}
+               : detail::ContactLoad{};
     [[maybe_unused]] const Vec3 pointBefore = Ledger ? s.point[k] : Vec3::Zero();
     ContactHistory history{.spring = s.spring[k], .normal = s.normalHistory[k]};
     if (s.withRolling) history.rolling = s.rolling[k];

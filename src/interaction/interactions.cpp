@@ -173,13 +173,15 @@ void Interactions::indexInvolvement(std::size_t owned, const std::vector<std::ui
   remoteUpTo(ContactKey{~std::uint64_t{0}, ~std::uint32_t{0}});
 }
 
-std::array<ExactSum, 4> Interactions::energy() const {
-  std::array<ExactSum, 4> sum;
+std::array<ExactSum, 6> Interactions::energy() const {
+  std::array<ExactSum, 6> sum;
   for (const ContactEnergy& e : store_.energy) {
     sum[0].add(e.stored);
     sum[1].add(e.normal);
     sum[2].add(e.damping);
     sum[3].add(e.tangential);
+    sum[4].add(e.bondStored);
+    sum[5].add(e.bond);
   }
   return sum;
 }

@@ -40,6 +40,7 @@ RunLog::RunLog(const std::filesystem::path& path, const World& world, std::optio
   if (world.energyLedger()) {
     out_ << ",work_bodies_J,work_gravity_J,elastic_energy_J,plastic_dissipation_J,damping_dissipation_J,tangential_dissipation_J"
             ",drag_dissipation_J,energy_residual_J";
+    if (bonds_) out_ << ",bond_energy_J,bond_dissipation_J";
   }
   out_ << std::endl;
 }
@@ -69,6 +70,7 @@ std::optional<PlateMeasures> RunLog::row(const World& world, long step, const st
   if (const auto& e = world.energyLedger()) {
     out_ << ',' << e->bodies << ',' << e->gravity << ',' << e->stored << ',' << e->plastic() << ',' << e->damping << ','
          << e->tangential << ',' << e->drag << ',' << e->residual(world.kineticEnergy());
+    if (bonds_) out_ << ',' << e->bondStored << ',' << e->bondDissipation();
   }
   out_ << std::endl;
   return plate;

@@ -39,9 +39,6 @@ void readOutput(const Reader& r, const YAML::Node& root, Scene& scene) {
                    ", without surface_energy); interactions[" +
                    std::to_string(k) + "] uses " + scene.interactions[k].normalName);
       }
-      if (scene.interactions[k].bond) {
-        r.fail(out["energy"], "output.energy", "the energy ledger does not account bonds yet; interactions[" + std::to_string(k) + "] has one");
-      }
     }
   }
 }

@@ -8,9 +8,10 @@ void EnergyLedger::start(const World& world) {
   *this = {};
   started = true;
   initialKinetic = world.kineticEnergy();
-  std::array<ExactSum, 4> contacts = world.interactions().energy();
+  std::array<ExactSum, 6> contacts = world.interactions().energy();
   world.communicator().sum(contacts);
   initialStored = stored = contacts[0].value();
+  initialBondStored = bondStored = contacts[4].value();
 }
 
 void EnergyLedger::addStep(const World& world, const std::vector<Wall>& before) {
@@ -30,12 +31,14 @@ void EnergyLedger::addStep(const World& world, const std::vector<Wall>& before) 
     const Wall& now = world.walls()[w];
     bodies -= 0.5 * dt * ((before[w].force + now.force).dot(now.velocity) + (before[w].torque + now.torque).dot(now.angularVelocity));
   }
-  std::array<ExactSum, 4> contacts = world.interactions().energy();  // stored, normal, damping, tangential
+  std::array<ExactSum, 6> contacts = world.interactions().energy();  // stored, normal, damping, tangential, bond's stored, bond's
   world.communicator().sum(contacts);
   stored = contacts[0].value();
   normal += contacts[1].value();
   damping += contacts[2].value();
   tangential += contacts[3].value();
+  bondStored = contacts[4].value();
+  bonds += contacts[5].value();
 }
 
 }  // namespace sqdem

@@ -28,7 +28,6 @@ void requireLedgerModel(const ContactModel& model) {
   if (!storesEnergy(model.normal)) {
     throw std::invalid_argument("World: the energy ledger needs laws that state their stored energy (StoredEnergyLaw)");
   }
-  if (model.bond) throw std::invalid_argument("World: the energy ledger does not account bonds yet");
 }
 
 }  // namespace

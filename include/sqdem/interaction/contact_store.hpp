@@ -59,6 +59,8 @@ struct ContactEnergy {
   double normal = 0.0;      ///< by the rate-independent normal force: stored or plastically dissipated
   double damping = 0.0;     ///< by the normal viscous force
   double tangential = 0.0;  ///< by the tangential force and the rolling moment: springs and sliding
+  double bondStored = 0.0;  ///< the bond's elastic energy (parallel_bond.hpp), 0 when none holds
+  double bond = 0.0;        ///< by the bond's force and moment: stored, or released as it broke
 };
 
 /// A contact's bond (docs/bonds.md): where it sits on both bodies and its section's radius. A
@@ -66,7 +68,9 @@ struct ContactEnergy {
 struct BondRecord {
   enum class State : std::uint8_t { None, Intact, Broken };
   BondRest rest;
-  double radius = 0.0;  ///< R = lambda min(R_vol A, R_vol B) (m)
+  double radius = 0.0;            ///< R = lambda min(R_vol A, R_vol B) (m)
+  Vec3 force = Vec3::Zero();      ///< its load on B at the last computation (N; zero once broken): the
+  Vec3 moment = Vec3::Zero();     ///< energy ledger's work, and what the contact's force holds besides the law's
   State state = State::None;
 
   bool intact() const { return state == State::Intact; }

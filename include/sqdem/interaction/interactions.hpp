@@ -226,9 +226,9 @@ class Interactions {
   std::vector<ContactEllipse> ellipses(const InteractionScene& scene) const;
   std::size_t actingCount() const { return listActing().size(); }
   /// This process's share of the contacts' ContactEnergy of the last computation, exact sums
-  /// of its fields in their order (stored, normal, damping, tangential); zero without a store
-  /// made withEnergy.
-  std::array<ExactSum, 4> energy() const;
+  /// of its fields in their order (stored, normal, damping, tangential, bondStored, bond); zero
+  /// without a store made withEnergy.
+  std::array<ExactSum, 6> energy() const;
   /// Bytes held (store, groups, key order, particle index).
   std::size_t bytes() const;
 

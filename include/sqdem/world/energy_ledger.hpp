@@ -3,7 +3,8 @@
 // the particles by the walls (kinematic bodies) and by gravity, against where it went, every
 // term accumulated step by step since the ledger started (J):
 //
-//   W_bodies + W_gravity + W_edits = dE_kin + dU + D_plastic + D_damping + D_tangential + D_drag + residual
+//   W_bodies + W_gravity + W_edits = dE_kin + dU + D_plastic + D_damping + D_tangential + D_drag
+//                                    + dU_bonds + D_bonds + residual
 //
 //   W_bodies      sum over walls of -(F_n + F_{n+1}) / 2 . v dt - (T_n + T_{n+1}) / 2 . w dt, with F, T
 //                 the force and torque the particles exert on the wall (about its reference
@@ -19,6 +20,9 @@
 //   D_tangential  absorbed by the tangential forces: sliding (friction) and the Mindlin springs'
 //                 current elastic energy
 //   D_drag        c sum m |v_{n+1/2}|^2 dt of the background drag
+//   U_bonds       the elastic energy of the intact bonds now (parallel_bond.hpp)
+//   D_bonds       the work absorbed by the bonds less dU_bonds: the energy a bond held as it broke
+//                 (released to nothing: the bond is gone), and the quadrature error
 // Contact terms: ContactEnergy (contact_store.hpp) and contact_work.hpp. Each term's
 // quadrature is that of velocity Verlet (trapezoidal in the forces, the drift's velocity), so the
 // residual measures what the integration of rotation (NO_SQUISH) and the contacts' lever arms
@@ -34,8 +38,9 @@ struct Wall;
 struct EnergyLedger {
   double bodies = 0.0, gravity = 0.0, edits = 0.0;  ///< work done on the particles (J)
   double normal = 0.0, damping = 0.0, tangential = 0.0, drag = 0.0;  ///< absorbed (J)
-  double stored = 0.0;                               ///< U now (J)
-  double initialKinetic = 0.0, initialStored = 0.0;  ///< E_kin and U when the ledger started (J)
+  double bonds = 0.0;                                ///< absorbed by the bonds (J)
+  double stored = 0.0, bondStored = 0.0;             ///< U and U_bonds now (J)
+  double initialKinetic = 0.0, initialStored = 0.0, initialBondStored = 0.0;  ///< E_kin, U and U_bonds when the ledger started (J)
   bool started = false;                              ///< at the first force computation
 
   /// Starts the ledger at the world's state (forces computed).
@@ -44,8 +49,9 @@ struct EnergyLedger {
   void addStep(const World& world, const std::vector<Wall>& before);
 
   double plastic() const { return normal - (stored - initialStored); }
+  double bondDissipation() const { return bonds - (bondStored - initialBondStored); }
   double residual(double kinetic) const {
-    return bodies + gravity + edits - (kinetic - initialKinetic) - normal - damping - tangential - drag;
+    return bodies + gravity + edits - (kinetic - initialKinetic) - normal - damping - tangential - drag - bonds;
   }
 };
 
