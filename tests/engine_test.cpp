@@ -367,6 +367,87 @@ TEST(Engine, InsertionByTargetSolidFraction) {
   EXPECT_GT(world.particles().size(), 60u);
 }
 
+// insert.recipe: two species by mass or by volume fractions (docs/scene_reference.md, insert):
+// large grains (2500 kg/m^3) and small binder spheres (930 kg/m^3, 1/8 of their size). With a
+// solid_fraction each species' volume reaches its share of it (the last particle of each may
+// overshoot by its own volume); with a count, the first species has exactly that many and the
+// second its share of the total they imply. The achieved fractions are the recipe's to within one
+// particle of each species.
+TEST(Engine, InsertionByRecipe) {
+  const std::string recipe = replaced(
+      replaced(bedScene, "  grains: {volume_radius: [0.4e-3, 0.6e-3], aspect_b: [0.6, 1.2], aspect_c: [0.6, 1.2]}\n",
+               "  grains: {volume_radius: [0.4e-3, 0.6e-3], aspect_b: [0.6, 1.2], aspect_c: [0.6, 1.2]}\n"
+               "  binder: {volume_radius: [0.05e-3, 0.075e-3]}\n"),
+      "restitution: 0.3}\n", "restitution: 0.3}\n  cbd: {youngs_modulus: 1.0e6, poisson_ratio: 0.3, density: 930, friction: 0.4, restitution: 0.3}\n");
+  const std::string pairs = "interactions:\n  - materials: [glass, glass]\n  - materials: [glass, cbd]\n  - materials: [cbd, cbd]\n";
+  const auto withInsert = [&](const std::string& entry) {
+    return replaced(replaced(recipe, "interactions:\n  - materials: [glass, glass]\n", pairs),
+                    "  - {count: 60, shape: grains, material: glass, region: {lo: [0, 0, 1.0e-3], hi: [6.0e-3, 6.0e-3, 11.0e-3]}}", entry);
+  };
+  struct Totals {
+    double mass[2] = {0.0, 0.0}, volume[2] = {0.0, 0.0}, largestMass[2] = {0.0, 0.0}, largestVolume[2] = {0.0, 0.0};
+    std::size_t count[2] = {0, 0};
+  };
+  const auto totals = [](const World& world) {
+    Totals t;
+    const ParticleStore& p = world.particles();
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      const int s = static_cast<int>(p.material[i]);  // 0 glass grains, 1 cbd binder
+      const double v = world.shapes()[p.shape[i]].volume();
+      t.mass[s] += p.mass[i];
+      t.volume[s] += v;
+      t.largestMass[s] = std::max(t.largestMass[s], p.mass[i]);
+      t.largestVolume[s] = std::max(t.largestVolume[s], v);
+      ++t.count[s];
+    }
+    return t;
+  };
+  const std::string region = "region: {lo: [0, 0, 1.0e-3], hi: [6.0e-3, 6.0e-3, 11.0e-3]}";
+  const double regionVolume = 6.0e-3 * 6.0e-3 * 10.0e-3;
+  // By mass, to a solid fraction of 0.1: 96 % grains, 4 % binder by mass.
+  {
+    const Totals t = totals(buildWorld(loadScene(writeScene("recipe_mass", withInsert(
+        "  - {recipe: [{shape: grains, material: glass, fraction: 0.96}, {shape: binder, material: cbd, fraction: 0.04}], "
+        "by: mass, solid_fraction: 0.1, " + region + "}")))));
+    const double total = t.mass[0] + t.mass[1];
+    ASSERT_GT(t.count[1], 100u);
+    EXPECT_NEAR(t.mass[1] / total, 0.04, (t.largestMass[0] + t.largestMass[1]) / total);
+    const double volumeShare1 = (0.04 / 930.0) / (0.96 / 2500.0 + 0.04 / 930.0);  // the binder's share of the volume
+    EXPECT_GE(t.volume[1], volumeShare1 * 0.1 * regionVolume);
+    EXPECT_LT(t.volume[1] - t.largestVolume[1], volumeShare1 * 0.1 * regionVolume);
+    EXPECT_GE(t.volume[0], (1.0 - volumeShare1) * 0.1 * regionVolume);
+    EXPECT_LT(t.volume[0] - t.largestVolume[0], (1.0 - volumeShare1) * 0.1 * regionVolume);
+    std::printf("by mass 0.96 / 0.04 to solid fraction 0.1: %zu grains, %zu binder particles, binder mass fraction %.5f\n", t.count[0],
+                t.count[1], t.mass[1] / total);
+  }
+  // By volume, with a count: 50 grains, and binder to 10 % of the particle volume.
+  {
+    const Totals t = totals(buildWorld(loadScene(writeScene("recipe_volume", withInsert(
+        "  - {recipe: [{shape: grains, material: glass, fraction: 0.9}, {shape: binder, material: cbd, fraction: 0.1}], "
+        "by: volume, count: 50, " + region + "}")))));
+    EXPECT_EQ(t.count[0], 50u);
+    const double target = 0.1 / 0.9 * t.volume[0];
+    EXPECT_GE(t.volume[1], target);
+    EXPECT_LT(t.volume[1] - t.largestVolume[1], target);
+    std::printf("by volume 0.9 / 0.1 with 50 grains: %zu binder particles, binder volume fraction %.5f\n", t.count[1],
+                t.volume[1] / (t.volume[0] + t.volume[1]));
+  }
+  // Its errors.
+  const std::string two = "[{shape: grains, material: glass, fraction: 0.9}, {shape: binder, material: cbd, fraction: 0.2}]";
+  expectSceneError(withInsert("  - {recipe: " + two + ", count: 5, " + region + "}"),
+                   "'insert[0].recipe': the fractions sum to 1.1; they must sum to 1 (of the mass)");
+  expectSceneError(withInsert("  - {recipe: [{shape: grains, material: glass, fraction: 1}], count: 5, " + region + "}"),
+                   "'insert[0].recipe': must be a list of at least two {shape, material, fraction}");
+  expectSceneError(withInsert("  - {recipe: " + two + ", by: weight, count: 5, " + region + "}"), "'insert[0].by': allowed: mass, volume");
+  expectSceneError(withInsert("  - {recipe: " + two + ", shape: grains, count: 5, " + region + "}"),
+                   "'insert[0].shape': belongs to each entry of the recipe");
+  expectSceneError(withInsert("  - {shape: grains, material: glass, by: mass, count: 5, " + region + "}"),
+                   "'insert[0].by': belongs to a recipe");
+  expectSceneError(withInsert("  - {recipe: [{shape: grains, material: glass, fraction: 0.5}, {shape: binder, material: cbd}], count: 5, " +
+                              region + "}"),
+                   "'insert[0].recipe[1].fraction': missing");
+}
+
 // A bed with Becker-Kamlah contacts (002, NMC fits with the transition, elliptic Mindlin
 // tangential) settles like the elastic one; a low yield strength makes contacts plastic, so the
 // bed ends with permanent (plastic) overlaps that an elastic bed does not have: after the pour,
@@ -457,7 +538,7 @@ TEST(Engine, SceneErrorsNameLineKeyAndWhatIsAllowed) {
   expectSceneError(replaced(bedScene, "{name: settle, duration: 0.2}", "{name: settle}"), "'stages[0].duration': missing");
   expectSceneError(withInteraction("    normal: volume_sphere_hertz\n    tangential: elliptic_mindlin\n"),
                    "'interactions[0].tangential': elliptic_mindlin needs a law on the curvatures (allowed here: circular_mindlin)");
-  expectSceneError(replaced(bedScene, "seed: 7", "seed: 7\nbroad_phase: octree"), "'broad_phase': allowed: cell_list, aabb_tree");
+  expectSceneError(replaced(bedScene, "seed: 7", "seed: 7\nbroad_phase: octree"), "'broad_phase': allowed: auto, cell_list, aabb_tree");
   expectSceneError(replaced(bedScene, "seed: 7", "seed: 7\ndetector_tolerance: 0.01"),
                    "'detector_tolerance': must be in [1e-14, 1e-3] (relative to sqrt(R_vol,A R_vol,B))");
   expectSceneError(replaced(bedScene, "grains: {volume_radius", "grains: {file: no_such_shape.yaml}\n  unused: {volume_radius"),

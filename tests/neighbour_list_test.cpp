@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <numeric>
 #include <random>
 
@@ -123,6 +124,22 @@ TEST(NeighbourList, PeriodicImagesAsGhostsGiveEveryNearestImagePairOnce) {
       EXPECT_LE(found.size(), expected.size() + expected.size() / 1000);
     }
   }
+}
+
+// broad_phase: auto (automaticBroadPhase): the cell list while its cells (2 r_max + skin wide)
+// would hold at most 30 particles at 0.6 of the volume, the tree beyond. Equal radii: 0.6 x 2.1^3
+// / (4 pi / 3) = 1.3 per cell; one radius-20 particle per 100 of radius 1: 0.6 x 40.1^3 /
+// (4 pi / 3 x (8000 + 99) / 100) = 114.
+TEST(NeighbourList, AutomaticBroadPhaseTakesTheTreeWhereCellsWouldBeCrowded) {
+  EXPECT_EQ(automaticBroadPhase(std::vector<double>(100, 1.0), 0.1), BroadPhase::CellList);
+  std::vector<double> bimodal(100, 1.0);
+  bimodal[0] = 20.0;
+  EXPECT_EQ(automaticBroadPhase(bimodal, 0.1), BroadPhase::AabbTree);
+  // The threshold, with equal radii 1 and the skin that makes the cell 30 particles' room.
+  const double side = std::cbrt(30.0 * 4.0 / 3.0 * std::numbers::pi / 0.6);
+  EXPECT_EQ(automaticBroadPhase(std::vector<double>(10, 1.0), side * (1.0 - 1e-9) - 2.0), BroadPhase::CellList);
+  EXPECT_EQ(automaticBroadPhase(std::vector<double>(10, 1.0), side * (1.0 + 1e-9) - 2.0), BroadPhase::AabbTree);
+  EXPECT_EQ(automaticBroadPhase(std::vector<double>{}, 0.1), BroadPhase::CellList);
 }
 
 }  // namespace

@@ -49,9 +49,10 @@ void printSummary(const World& world, const RunReport& report, double wall, cons
               world.neighbourList().builds());
   const StepTiming& t = world.timing();
   const auto share = [&](double part) { return wall > 0.0 ? 100.0 * part / wall : 0.0; };
-  std::printf("time%s: contacts (detection and laws) %.1f %%, integration %.1f %%, broad phase %.1f %%, reduction %.1f %%, "
+  std::printf("time%s: contacts (detection and laws) %.1f %%, integration %.1f %%, broad phase (%s) %.1f %%, reduction %.1f %%, "
               "%s %.1f %%, other (stages, output, checks) %.1f %%; threads waiting at the step's barriers %.1f %%\n",
-              ranks.size() > 1 ? " (rank 0)" : "", share(t.contacts), share(t.integration), share(t.broadPhase),
+              ranks.size() > 1 ? " (rank 0)" : "", share(t.contacts), share(t.integration),
+              world.neighbourList().search() == BroadPhase::CellList ? "cell list" : "AABB tree", share(t.broadPhase),
               share(t.reduction), ranks.size() > 1 ? "ghosts and communication" : "ghosts", share(t.ghosts),
               share(wall - t.contacts - t.integration - t.broadPhase - t.reduction - t.ghosts), share(t.barrierWait));
   if (ranks.size() > 1) {

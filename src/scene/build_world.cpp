@@ -93,23 +93,37 @@ World buildWorld(const Scene& scene) {
     const InsertionSpec& in = scene.insertions[k];
     std::uniform_real_distribution<double> ux(in.lo.x(), in.hi.x()), uy(in.lo.y(), in.hi.y()), uz(in.lo.z(), in.hi.z());
     // Sample every shape first and place the largest first (random sequential addition then
-    // reaches much higher loose fractions for polydisperse sets).
-    // A count, or shapes until their volume reaches solidFraction x the region's volume.
-    std::vector<std::pair<Superquadric, Quat>> batch;
-    const double targetVolume = in.solidFraction * (in.hi - in.lo).prod();
-    double volume = 0.0;
-    while (in.solidFraction > 0.0 ? volume < targetVolume : batch.size() < in.count) {
-      const Superquadric shape = sampleShape(rng, scene.shapes[in.shape]);
-      volume += shape.volume();
-      batch.emplace_back(shape, in.randomOrientation ? randomRotation(rng) : Quat::Identity());
-      if (batch.size() > 10'000'000) {
-        throw SceneError(scene.path + ": insert[" + std::to_string(k) + "]: solid_fraction asks for more than 1e7 particles");
+    // reaches much higher loose fractions for polydisperse sets). Species by species: the first
+    // a count, or shapes until their volume reaches its share of solidFraction x the region's
+    // volume; the others until their volume reaches their share (of that, or of the total the
+    // first's volume implies).
+    struct Drawn {
+      Superquadric shape;
+      Quat orientation;
+      std::uint32_t material;
+    };
+    std::vector<Drawn> batch;
+    const double region = (in.hi - in.lo).prod();
+    double firstVolume = 0.0;
+    for (std::size_t s = 0; s < in.species.size(); ++s) {
+      const InsertedSpecies& species = in.species[s];
+      const bool counted = s == 0 && in.solidFraction == 0.0;
+      const double target = in.solidFraction > 0.0 ? species.volumeFraction * in.solidFraction * region
+                                                   : species.volumeFraction / in.species[0].volumeFraction * firstVolume;
+      double volume = 0.0;
+      for (std::size_t drawn = 0; counted ? drawn < in.count : volume < target; ++drawn) {
+        const Superquadric shape = sampleShape(rng, scene.shapes[species.shape]);
+        volume += shape.volume();
+        batch.push_back({shape, in.randomOrientation ? randomRotation(rng) : Quat::Identity(), species.material});
+        if (batch.size() > 10'000'000) {
+          throw SceneError(scene.path + ": insert[" + std::to_string(k) + "]: asks for more than 1e7 particles");
+        }
       }
+      if (s == 0) firstVolume = volume;
     }
-    std::stable_sort(batch.begin(), batch.end(),
-                     [](const auto& x, const auto& y) { return x.first.boundingRadius() > y.first.boundingRadius(); });
+    std::stable_sort(batch.begin(), batch.end(), [](const Drawn& x, const Drawn& y) { return x.shape.boundingRadius() > y.shape.boundingRadius(); });
     if (!batch.empty()) {  // the largest must fit the box at all (a unit slip between shapes and domain?)
-      const double diameter = 2.0 * batch.front().first.boundingRadius();
+      const double diameter = 2.0 * batch.front().shape.boundingRadius();
       for (int d = 0; d < 3; ++d) {
         if (diameter >= scene.domain.length()(d)) {
           throw SceneError(scene.path + ": insert[" + std::to_string(k) + "]: a particle of bounding diameter " +
@@ -120,12 +134,12 @@ World buildWorld(const Scene& scene) {
     }
     // Every centre so far (explicit, from files, of earlier entries) binned in cells wider than
     // any r + radii[j] this batch can test: its largest (the first) plus the largest of all.
-    const double rBatch = batch.empty() ? 0.0 : batch.front().first.boundingRadius();
+    const double rBatch = batch.empty() ? 0.0 : batch.front().shape.boundingRadius();
     const double rPlaced = radii.empty() ? 0.0 : *std::max_element(radii.begin(), radii.end());
     detail::InsertionGrid grid(scene.domain, rBatch + std::max(rBatch, rPlaced), centres.size() + batch.size());
     for (std::size_t j = 0; j < centres.size(); ++j) grid.add(static_cast<std::uint32_t>(j), centres[j]);
     for (std::size_t n = 0; n < batch.size(); ++n) {
-      const auto& [shape, q] = batch[n];
+      const auto& [shape, q, material] = batch[n];
       const double r = shape.boundingRadius();
       bool placed = false;
       for (int attempt = 0; attempt < 10000 && !placed; ++attempt) {
@@ -137,7 +151,7 @@ World buildWorld(const Scene& scene) {
         if (placed) {
           grid.add(static_cast<std::uint32_t>(centres.size()), x);
           shapes.push_back(shape);
-          materialOf.push_back(in.material);
+          materialOf.push_back(material);
           centres.push_back(x);
           orientations.push_back(q);
           radii.push_back(r);
@@ -196,7 +210,7 @@ World buildWorld(const Scene& scene) {
                        " m: raise 'skin' to at least that or give a smaller gap");
     }
   }
-  World world(shapes, materials, scene.domain, skin, scene.broadPhase);
+  World world(shapes, materials, scene.domain, skin, scene.broadPhase.value_or(automaticBroadPhase(radii, skin)));
   world.setReorderInterval(scene.reorderEvery);
   world.setSphereOrientations(scene.output.sphereOrientation);
   if (scene.output.energy) world.enableEnergyLedger();

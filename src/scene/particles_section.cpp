@@ -47,6 +47,48 @@ std::pair<Vec3, Vec3> readRegion(const Reader& r, const YAML::Node& region, cons
   return {lo, hi};
 }
 
+/// A species' shape and material (`where` an insert entry or a recipe's).
+InsertedSpecies readSpecies(const Reader& r, const YAML::Node& in, const std::string& where, const Scene& scene) {
+  if (!in["shape"]) r.fail(in, where + ".shape", "missing");
+  if (!in["material"]) r.fail(in, where + ".material", "missing");
+  return {r.lookup(in["shape"], where + ".shape", scene.shapes, "shape"),
+          r.lookup(in["material"], where + ".material", scene.materials, "material")};
+}
+
+/// `recipe: [{shape, material, fraction}, ...]` with `by: mass | volume` (default mass): each
+/// species' share of the particle volume (a mass fraction w_i becomes (w_i / rho_i) / sum_j w_j / rho_j).
+std::vector<InsertedSpecies> readRecipe(const Reader& r, const YAML::Node& in, const std::string& where, const Scene& scene) {
+  for (const char* key : {"shape", "material"}) {
+    if (in[key]) r.fail(in[key], where + "." + key, "belongs to each entry of the recipe");
+  }
+  const YAML::Node recipe = in["recipe"];
+  if (!recipe.IsSequence() || recipe.size() < 2) {
+    r.fail(recipe, where + ".recipe", "must be a list of at least two {shape, material, fraction}");
+  }
+  const bool byMass = r.choice(in, "by", where, {{"mass", true}, {"volume", false}}, true);
+  std::vector<InsertedSpecies> species;
+  double sum = 0.0, volumeSum = 0.0;
+  for (std::size_t k = 0; k < recipe.size(); ++k) {
+    const std::string entry = where + ".recipe[" + std::to_string(k) + "]";
+    r.allowOnly(recipe[k], entry, {"shape", "material", "fraction"});
+    InsertedSpecies s = readSpecies(r, recipe[k], entry, scene);
+    const double fraction = r.number(recipe[k], "fraction", entry);
+    if (!(fraction > 0.0 && fraction <= 1.0)) r.fail(recipe[k]["fraction"], entry + ".fraction", "must be in (0, 1]");
+    sum += fraction;
+    s.volumeFraction = byMass ? fraction / scene.materials[s.material].material.density : fraction;
+    volumeSum += s.volumeFraction;
+    species.push_back(s);
+  }
+  if (std::abs(sum - 1.0) > 1e-9) {
+    r.fail(recipe, where + ".recipe", "the fractions sum to " + shortNumber(sum) + "; they must sum to 1 (of the " +
+                                          (byMass ? "mass" : "volume") + ")");
+  }
+  if (byMass) {
+    for (InsertedSpecies& s : species) s.volumeFraction /= volumeSum;
+  }
+  return species;
+}
+
 }  // namespace
 
 void readParticles(const Reader& r, const YAML::Node& root, Scene& scene) {
@@ -88,10 +130,11 @@ void readParticles(const Reader& r, const YAML::Node& root, Scene& scene) {
       }
       continue;
     }
-    r.allowOnly(in, where, {"count", "solid_fraction", "shape", "material", "region", "random_orientation"});
+    r.allowOnly(in, where, {"count", "solid_fraction", "shape", "material", "recipe", "by", "region", "random_orientation"});
     InsertionSpec spec;
     if (in["count"].IsDefined() == in["solid_fraction"].IsDefined()) {
-      r.fail(in, where, "needs exactly one of count (particles) or solid_fraction (of the region's volume)");
+      r.fail(in, where, "needs exactly one of count (particles" + std::string(in["recipe"] ? " of the recipe's first entry" : "") +
+                            ") or solid_fraction (of the region's volume)");
     }
     if (in["count"]) spec.count = static_cast<std::size_t>(r.integer(in, "count", where, 1.0, 1e7));
     if (in["solid_fraction"]) {
@@ -100,10 +143,8 @@ void readParticles(const Reader& r, const YAML::Node& root, Scene& scene) {
         r.fail(in["solid_fraction"], where + ".solid_fraction", "must be in (0, 0.4] (random sequential addition jams near 0.38)");
       }
     }
-    if (!in["shape"]) r.fail(in, where + ".shape", "missing");
-    if (!in["material"]) r.fail(in, where + ".material", "missing");
-    spec.shape = r.lookup(in["shape"], where + ".shape", scene.shapes, "shape");
-    spec.material = r.lookup(in["material"], where + ".material", scene.materials, "material");
+    if (in["by"] && !in["recipe"]) r.fail(in["by"], where + ".by", "belongs to a recipe (recipe: [{shape, material, fraction}, ...])");
+    spec.species = in["recipe"] ? readRecipe(r, in, where, scene) : std::vector{readSpecies(r, in, where, scene)};
     const YAML::Node region = in["region"];
     if (!region) r.fail(in, where + ".region", "missing ({lo: [x,y,z], hi: [x,y,z]})");
     std::tie(spec.lo, spec.hi) = readRegion(r, region, where + ".region");

@@ -44,7 +44,7 @@ SceneFingerprint sceneFingerprint(const Scene& scene) {
   next();
   h.all(scene.timeStep.value_or(0.0), scene.timeStepFraction, scene.impactVelocity, scene.stepsPerCollision);
   next();
-  h.all(scene.skin, h.n(scene.broadPhase), h.n(scene.reorderEvery));
+  h.all(scene.skin, h.n(scene.broadPhase ? static_cast<int>(*scene.broadPhase) + 1 : 0), h.n(scene.reorderEvery));
   next();
   for (const NamedMaterial& m : scene.materials) {
     const Material& x = m.material;
@@ -79,7 +79,12 @@ SceneFingerprint sceneFingerprint(const Scene& scene) {
           q.y(), q.z(), p.velocity, p.angularVelocity, h.n(p.allowOverlap));
   }
   for (const InsertionSpec& in : scene.insertions) {
-    h.all(h.n(in.count), in.solidFraction, h.n(in.shape), h.n(in.material), in.lo, in.hi, h.n(in.randomOrientation));
+    h.all(h.n(in.count), in.solidFraction, h.n(in.species[0].shape), h.n(in.species[0].material), in.lo, in.hi,
+          h.n(in.randomOrientation));
+    for (std::size_t k = 1; k < in.species.size(); ++k) {
+      h.all(h.n(in.species[k].shape), h.n(in.species[k].material), in.species[k].volumeFraction);
+    }
+    if (in.species.size() > 1) h.all(in.species[0].volumeFraction);
   }
   next();
   h.all(h.n(scene.output.energy));

@@ -61,8 +61,10 @@ Scene parseScene(const Reader& r, const std::string& name, const YAML::Node& roo
       r.fail(root["detector_tolerance"], "detector_tolerance", "must be in [1e-14, 1e-3] (relative to sqrt(R_vol,A R_vol,B))");
     }
   }
-  scene.broadPhase = r.choice(root, "broad_phase", "", {{"cell_list", BroadPhase::CellList}, {"aabb_tree", BroadPhase::AabbTree}},
-                              BroadPhase::CellList);
+  scene.broadPhase = r.choice(root, "broad_phase", "",
+                              {{"auto", std::optional<BroadPhase>()}, {"cell_list", std::optional(BroadPhase::CellList)},
+                               {"aabb_tree", std::optional(BroadPhase::AabbTree)}},
+                              std::optional<BroadPhase>());
   scene.reorderEvery = static_cast<int>(r.integer(root, "reorder_every", "", 0.0, 1e6, 20.0));
 
   detail::readMaterials(r, root, scene);

@@ -1,8 +1,20 @@
 #include "sqdem/world/neighbour_list.hpp"
 
 #include <algorithm>
+#include <numbers>
 
 namespace sqdem {
+
+BroadPhase automaticBroadPhase(const std::vector<double>& radii, double skin) {
+  if (radii.empty()) return BroadPhase::CellList;
+  double largest = 0.0, volume = 0.0;
+  for (const double r : radii) {
+    largest = std::max(largest, r);
+    volume += r * r * r;
+  }
+  const double width = 2.0 * largest + skin, meanVolume = 4.0 / 3.0 * std::numbers::pi * volume / static_cast<double>(radii.size());
+  return 0.6 * width * width * width / meanVolume > 30.0 ? BroadPhase::AabbTree : BroadPhase::CellList;
+}
 
 bool NeighbourList::needsRebuild(const ParticleStore& particles) const {
   if (!covers(particles.size())) return true;

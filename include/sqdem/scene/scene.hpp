@@ -68,10 +68,18 @@ struct WallSpec {
   std::shared_ptr<const MeshFeatures> mesh;
 };
 
-struct InsertionSpec {
-  std::size_t count = 0;         ///< number of particles, or
-  double solidFraction = 0.0;    ///< (> 0) insert until the particle volume is this x the region's
+/// One species of a random insertion: a shape family of one material, and its share.
+struct InsertedSpecies {
   std::uint32_t shape = 0, material = 0;
+  double volumeFraction = 1.0;  ///< of the insertion's particle volume (a recipe's mass fractions converted)
+};
+
+/// A random insertion (`insert: [{count | solid_fraction, shape, material, region}]`), or a
+/// recipe of several species (`recipe: [{shape, material, fraction}, ...], by: mass | volume`).
+struct InsertionSpec {
+  std::vector<InsertedSpecies> species;  ///< one, or the recipe's in its order
+  std::size_t count = 0;         ///< particles of the first species (the others by their share), or
+  double solidFraction = 0.0;    ///< (> 0) insert until the particle volume is this x the region's
   Vec3 lo = Vec3::Zero(), hi = Vec3::Zero();  ///< region for the centres (m)
   bool randomOrientation = true;
 };
@@ -138,7 +146,7 @@ struct Scene {
   double stepsPerCollision = 50.0; ///< ... with this many steps
   double skin = 0.0;               ///< Verlet skin (m); 0: 0.2 x smallest volume radius
   double detectorTolerance = 0.0;  ///< DetectorControl::tolerance (-); 0: the engine's default
-  BroadPhase broadPhase = BroadPhase::CellList;  ///< how candidate pairs are found
+  std::optional<BroadPhase> broadPhase;  ///< how candidate pairs are found; unset (auto): automaticBroadPhase
   int reorderEvery = 20;           ///< Hilbert re-ordering every N neighbour-list builds (0: off)
   std::vector<NamedMaterial> materials;
   std::vector<ShapeFamily> shapes;
