@@ -186,7 +186,7 @@ void groupKernel(std::span<const std::uint32_t> members, const ContactModel& pai
                  ContactStore& s, ContactStatistics& statistics) {
   const ContactModel model = asRun(pairModel, Kind);
   [[maybe_unused]] const detail::RoundHertz roundHertz(model);
-  const bool cached = cachesCurvatures(model, Kind);
+  const bool cached = cachesCurvatures(model, Kind), moments = s.withMoment();
   const double cosHalfAngle = std::cos(0.5 * model.curvatureTolerance);
   long long calls = 0, iterations = 0, confirmations = 0, failures = 0, deep = 0, lost = 0, invalid = 0;
   long long byStatus[contactStatusCount] = {};
@@ -254,7 +254,7 @@ void groupKernel(std::span<const std::uint32_t> members, const ContactModel& pai
     s.spring[k] = history.spring;
     s.normalHistory[k] = history.normal;
     if (s.withRolling) s.rolling[k] = history.rolling;
-    if (s.withMoment()) s.moment[k] = force.momentOnB;
+    if (moments) s.moment[k] = force.momentOnB;
     s.acting[k] = force.acting;
     s.force[k] = force.onB;
     s.load[k] = {force.normal, force.normalDamping, force.normalStiffness, force.area, force.yielded};

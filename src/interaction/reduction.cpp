@@ -9,23 +9,25 @@
 namespace sqdem {
 namespace {
 
-/// Contact k's load on B as a torque about centre: its force's moment and the pure moment (B's torque
-/// about its centre; A's, about its own, with the sign reversed).
-[[gnu::always_inline]] inline Vec3 torqueAbout(const ContactStore& s, std::uint32_t k, const Vec3& centre) {
-  return (s.point[k] - centre).cross(s.force[k]) + (s.withMoment() ? s.moment[k] : Vec3::Zero());
+/// Contact k's load on B as a torque about centre: its force's moment and the pure moment where
+/// the store keeps one (`moments`: s.withMoment(), read once per loop), B's torque about its
+/// centre; A's, about its own, with the sign reversed.
+[[gnu::always_inline]] inline Vec3 torqueAbout(const ContactStore& s, std::uint32_t k, const Vec3& centre, bool moments) {
+  return (s.point[k] - centre).cross(s.force[k]) + (moments ? s.moment[k] : Vec3::Zero());
 }
 
 }  // namespace
 
 LoadOnB Interactions::loadOnB(std::uint32_t k, const ParticleStore& p) const {
   if (!store_.acting[k]) return {};
-  return {store_.force[k], torqueAbout(store_, k, p.position[store_.b[k]]), 1};
+  return {store_.force[k], torqueAbout(store_, k, p.position[store_.b[k]], store_.withMoment()), 1};
 }
 
 void Interactions::reduce(ParticleStore& p, const Vec3& gravity, double drag, const std::vector<Wall>& walls,
                           std::vector<WallLoadSum>& wallLoads, std::span<const LoadOnB> remote, double halfStep,
                           const TeamSplit& split) {
   const ContactStore& s = store_;
+  const bool moments = s.withMoment();
   const auto n = static_cast<std::ptrdiff_t>(p.size());
   const Share particles = split.share(n);
   for (std::ptrdiff_t i = particles.begin; i < particles.end; ++i) {
@@ -44,11 +46,11 @@ void Interactions::reduce(ParticleStore& p, const Vec3& gravity, double drag, co
       if (!s.acting[k]) continue;
       if ((involvement_[m] & bodyBFlag) == 0) {  // i is body A
         force -= s.force[k];
-        torque -= torqueAbout(s, k, p.position[i]);
+        torque -= torqueAbout(s, k, p.position[i], moments);
       } else {
         force += s.force[k];
         const Vec3& centre = (involvement_[m] & imageFlag) != 0 ? p.position[s.b[k]] : p.position[i];  // i's image
-        torque += torqueAbout(s, k, centre);
+        torque += torqueAbout(s, k, centre, moments);
       }
     }
     p.force[i] = force;
@@ -66,7 +68,7 @@ void Interactions::reduce(ParticleStore& p, const Vec3& gravity, double drag, co
       if (!s.acting[k]) continue;
       const std::uint32_t w = s.b[k] & ~wallFlag;
       const Vec3 torque = (s.point[k] - s.wallImage[k] - walls[w].reference()).cross(s.force[k]) +
-                          (s.withMoment() ? s.moment[k] : Vec3::Zero());
+                          (moments ? s.moment[k] : Vec3::Zero());
       const Vec3 elastic = s.force[k] - s.load[k].damping * s.normal[k];
       std::array<ExactSum, 10>& part = mine[w].part;
       for (int d = 0; d < 3; ++d) {

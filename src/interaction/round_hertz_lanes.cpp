@@ -216,6 +216,7 @@ template <int W, bool OnWall>
 /// The block's results into the store: what the group kernel writes for a round contact.
 template <bool OnWall>
 [[gnu::always_inline]] inline void scatter(const Block& l, const std::uint32_t* members, int count, ContactStore& s, Counts& counts) {
+  const bool rolling = s.withRolling, moments = s.withMoment();  // (the byte stores below may alias them)
   for (int j = 0; j < count; ++j) {
     const std::uint32_t k = members[j];
     const bool acting = l.acting[j] != 0;
@@ -225,8 +226,8 @@ template <bool OnWall>
     s.point[k] = take(l.point, j);
     s.spring[k] = take(l.spring, j);
     if (!acting) s.normalHistory[k] = {};
-    if (s.withRolling && !acting) s.rolling[k].setZero();
-    if (s.withMoment()) s.moment[k].setZero();
+    if (rolling && !acting) s.rolling[k].setZero();
+    if (moments) s.moment[k].setZero();
     s.acting[k] = acting;
     s.force[k] = take(l.force, j);
     s.load[k] = {l.normalForce[j], l.damping[j], l.stiffness[j], l.area[j], false};
