@@ -235,6 +235,65 @@ TEST(EngineLaws, EllipticJkrEllipsoidPullOffEqualsTheDriver) {
   EXPECT_NEAR(tensile, pullOff, 1e-3 * std::abs(pullOff));
 }
 
+// 4b. A carbon-binder bridge (issue 28's electrode: docs/bonds.md, "A coating on its current
+// collector", and scene_reference.md, recipes): two NMC spheres (R 5 um, E 200 GPa) held by a
+// binder sphere between them (R 0.5 um, E 2 GPa, JKR against the NMC with gamma = 0.1 J/m^2; the
+// NMC spheres do not touch). Pulled apart symmetrically (the binder stays in the middle), the
+// most tensile force on either NMC sphere is the classical JKR pull-off of one NMC-binder
+// contact, 3/2 pi W R* with R* = R_nmc R_cbd / (R_nmc + R_cbd) and the two materials' E*
+// (within 2 %, as a sphere on a wall above), and the bridge lets go on both sides at once.
+TEST(EngineLaws, CarbonBinderBridgePullsOffAtTheJkrForceOfOneContact) {
+  omp_set_num_threads(1);
+  const double Rn = 5e-6, Rc = 0.5e-6, gamma = 0.1;
+  const Material nmc{200e9, 0.3, 4700.0, 0.0, 1.0}, cbd{2e9, 0.3, 930.0, 0.0, 1.0};
+  World world({Superquadric::sphere(Rn), Superquadric::sphere(Rc)}, {nmc, cbd}, bigBox(), 0.1 * Rc);
+  world.setContactModel(0, 0, world.defaultContactModel(0, 0));
+  world.setContactModel(1, 1, world.defaultContactModel(1, 1));
+  ContactModel bridge = world.defaultContactModel(0, 1);
+  bridge.normal = EllipticJkrLaw{gamma};
+  world.setContactModel(0, 1, bridge);
+  world.addParticle(0, 0, Vec3(-(Rn + Rc), 0.0, 0.0), Quat::Identity());
+  world.addParticle(1, 1, Vec3::Zero(), Quat::Identity());
+  world.addParticle(0, 0, Vec3(Rn + Rc, 0.0, 0.0), Quat::Identity());
+  world.setTimeStep(1e-9);
+  const ClassicalJkr jkr{2.0 * gamma, Rn * Rc / (Rn + Rc), effectiveModulus(nmc.youngsModulus, nmc.poissonRatio, cbd.youngsModulus, cbd.poissonRatio)};
+  // Both NMC spheres at overlap delta with the binder; the force on the right one (> 0 pushing it away).
+  const auto at = [&](double delta) {
+    ParticleStore& p = world.particles();
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      if (p.id[i] == 1) continue;
+      const double x = (p.id[i] == 0 ? -1.0 : 1.0) * (Rn + Rc - delta);
+      p.velocity[i] = Vec3((x - p.position[i].x()) / world.timeStep(), 0.0, 0.0);
+      p.position[i] = Vec3(x, 0.0, 0.0);
+    }
+    world.computeForces();
+    struct Bridge {
+      int contacts = 0;
+      double right = 0.0;
+    } b;
+    for (const ContactView c : world.contacts()) {
+      ++b.contacts;
+      if (p.id[c.b()] == 2 || p.id[c.a()] == 2) b.right = c.normalLoad().force;
+    }
+    return b;
+  };
+  const double scale = std::abs(jkr.detachmentOverlap());
+  for (double d : leg(-scale, scale, 200)) at(d);
+  ASSERT_EQ(at(scale).contacts, 2);
+  double tensile = 0.0;
+  int oneSided = 0;  // steps at which one side held and the other had let go
+  for (const double d : leg(scale, -2.0 * scale, 30000)) {
+    const auto b = at(d);
+    tensile = std::min(tensile, b.right);
+    oneSided += b.contacts == 1;
+  }
+  std::printf("binder bridge pull-off %.6e N (JKR 3/2 pi W R* %.6e N, %+.3f %%, R* %.4e m, E* %.4e Pa)\n", -tensile, jkr.pullOff(),
+              100.0 * (-tensile / jkr.pullOff() - 1.0), jkr.Rstar, jkr.Estar);
+  EXPECT_NEAR(-tensile, jkr.pullOff(), 0.02 * jkr.pullOff());
+  EXPECT_LE(oneSided, 1) << "the two sides let go at different overlaps";
+  EXPECT_EQ(at(-2.0 * scale).contacts, 0);
+}
+
 // 5. Nan et al. in the engine: a sphere hitting a wall without viscous damping sticks below the
 // critical sticking velocity V_ys of 000 Eqs. 73-79 (sticking_velocity.hpp) and rebounds above
 // it; tested at 0.9 and 1.1 V_ys for 000 Table 5's particle (R = 2.45 um) on silicon, with
