@@ -97,13 +97,21 @@ void printSummary(const World& world, const RunReport& report, double wall, cons
               (output.directory / (output.name + "_view.py")).string().c_str(), (output.directory / output.name).string().c_str());
   std::printf("final state: %s (a particle file: insert it into a scene with insert: [{file: ...}])\n",
               files.finalParticles().string().c_str());
-  if (const auto& c = files.compression()) {
-    std::printf("compression: peak plate pressure %.4g MPa; coating thickness before %.4g um (porosity %.4f), at the peak "
-                "%.4g um (%.4f), after %.4g um (%.4f)%s; springback %.2f %%, permanent compression %.2f %%\n",
-                c->peakPressure / 1e6, c->thicknessBefore * 1e6, c->porosityBefore, c->thicknessAtPeak * 1e6,
-                c->porosityAtPeak, c->thicknessAfter * 1e6, c->porosityAfter,
-                c->released ? "" : " (the plate never let go: the last gap)", 100.0 * c->springback(),
-                100.0 * c->permanentCompression());
+  if (!files.presses().empty()) {
+    const std::vector<CompressionSummary>& presses = files.presses();
+    for (std::size_t n = 0; n < presses.size(); ++n) {
+      const CompressionSummary& c = presses[n];
+      std::printf("compression%s: peak plate pressure %.4g MPa; coating thickness before %.4g um (porosity %.4f), at the peak "
+                  "%.4g um (%.4f), after %.4g um (%.4f)%s; springback %.2f %%, permanent compression %.2f %%\n",
+                  presses.size() > 1 ? (" " + std::to_string(n + 1)).c_str() : "", c.peakPressure / 1e6, c.thicknessBefore * 1e6,
+                  c.porosityBefore, c.thicknessAtPeak * 1e6, c.porosityAtPeak, c.thicknessAfter * 1e6, c.porosityAfter,
+                  c.released ? "" : " (the plate never let go: the last gap)", 100.0 * c.springback(), 100.0 * c.permanentCompression());
+    }
+    if (const auto& fit = files.compaction()) {
+      std::printf("compaction (Meyer et al. 2017, porosity after each press against its peak pressure): eps_min %.4f, eps_0 %.4f, "
+                  "gamma_c %.4g MPa, rms residual %.2g\n",
+                  fit->porosityMin, fit->porosityStart, fit->resistance / 1e6, fit->rmsResidual);
+    }
     std::printf("compression curve: %s%s\n", (output.directory / (output.name + "_compression.csv")).string().c_str(),
                 files.compressionPlot() ? (", plot " + files.compressionPlot()->string()).c_str() : " (no plot: gnuplot not found)");
   }

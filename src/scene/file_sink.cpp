@@ -32,7 +32,8 @@ void FileSink::checkpoint(const World& world, const RunProgress& progress, const
 void FileSink::completed(const World& world) {
   writeParticleFile(finalParticles(), world, scene_.materials);
   if (!compression_) return;
-  compressionSummary_ = compression_->summary();
+  presses_ = compression_->presses();
+  compaction_ = compression_->compaction();
   if (world.communicator().rank() == 0) compressionPlot_ = compression_->write(output_.directory, output_.name);
 }
 

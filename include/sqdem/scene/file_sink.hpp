@@ -45,7 +45,8 @@ class FileSink final : public RunSink {
   std::filesystem::path finalParticles() const { return file("_final_particles.csv"); }
   /// With a pressing plate, after completed(): what the press did (of this run's rows: a resumed
   /// run's from its checkpoint on) and its plot, when gnuplot made one.
-  const std::optional<CompressionSummary>& compression() const { return compressionSummary_; }
+  const std::vector<CompressionSummary>& presses() const { return presses_; }
+  const std::optional<CompactionFit>& compaction() const { return compaction_; }
   const std::optional<std::filesystem::path>& compressionPlot() const { return compressionPlot_; }
 
  private:
@@ -56,7 +57,8 @@ class FileSink final : public RunSink {
   std::unique_ptr<VtkSeries> frames_;
   std::unique_ptr<RunLog> log_;
   std::optional<CompressionRecord> compression_;
-  std::optional<CompressionSummary> compressionSummary_;
+  std::vector<CompressionSummary> presses_;
+  std::optional<CompactionFit> compaction_;
   std::optional<std::filesystem::path> compressionPlot_;
 };
 
