@@ -33,19 +33,19 @@ Domain bigBox() {
   return d;
 }
 
-/// A world of `shape`s with bonds between them, frictionless and undamped (restitution 1).
-World bondedWorld(const Superquadric& shape) {
+/// A world of `shape`s with bonds `b` between them, frictionless and undamped (restitution 1).
+World bondedWorld(const Superquadric& shape, const ParallelBond& b = bond) {
   World world({shape}, {Material{E, nu, rho, 0.0, 1.0}}, bigBox(), 0.2 * r);
   ContactModel model = world.defaultContactModel(0, 0);
-  model.bond = bond;
+  model.bond = b;
   world.setContactModel(0, 0, model);
   world.setTimeStep(1e-10);
   return world;
 }
 
 /// Particles along x, `gap` apart surface to surface (long axis along x), bonded.
-World bondedChain(const Superquadric& shape, int count, double gap) {
-  World world = bondedWorld(shape);
+World bondedChain(const Superquadric& shape, int count, double gap, const ParallelBond& b = bond) {
+  World world = bondedWorld(shape, b);
   const double pitch = 2.0 * shape.a() + gap;
   for (int i = 0; i < count; ++i) world.addParticle(0, 0, Vec3(i * pitch, 0.0, 0.0), Quat::Identity());
   world.computeForces();
@@ -146,6 +146,47 @@ TEST(BondEngine, UndampedBondKeepsItsEnergy) {
   std::printf("undamped bond over 2000 steps of omega dt = 0.02: largest energy error %.2e\n", worst);
   EXPECT_LT(worst, 1e-3);
   EXPECT_EQ(world.bondCount(), 1u);
+}
+
+// A damped bond (docs/bonds.md, "Damping"): two bonded spheres released stretched oscillate as a
+// damped harmonic oscillator of ratio beta (the dashpot 2 beta sqrt(k_n A m*) on their relative
+// stretch, m* = m / 2, k = k_n A): successive maxima of the stretch fall by
+// exp(-2 pi beta / sqrt(1 - beta^2)) and lie a damped period 2 pi / (omega sqrt(1 - beta^2))
+// apart (the damped oscillator's closed form), at beta = 0.05 and 0.3.
+TEST(BondEngine, DampedBondDecaysAtItsDampingRatio) {
+  omp_set_num_threads(1);
+  for (const double beta : {0.05, 0.3}) {
+    ParallelBond damped = bond;
+    damped.dampingRatio = beta;
+    World world = bondedChain(Superquadric::sphere(r), 2, 0.005 * r, damped);
+    const double u = 2e-10, k = bond.normalStiffness * section.area;
+    stretch(world, u);
+    const ParticleStore& p = world.particles();
+    const double pitch = std::abs(p.position[1].x() - p.position[0].x()) - u;
+    const double omega = std::sqrt(2.0 * k / p.mass[0]), damping = std::sqrt(1.0 - beta * beta);
+    world.setTimeStep(0.002 / omega);
+    struct Peak {
+      double time, stretch;
+    };
+    std::vector<Peak> peaks;
+    double before = u, now = u;
+    for (int s = 0; s < 40000 && peaks.size() < 4; ++s) {  // ~13 periods at most
+      world.step();
+      const double next = std::abs(p.position[1].x() - p.position[0].x()) - pitch;
+      if (now > before && now >= next && now > 0.0) peaks.push_back({world.time() - world.timeStep(), now});
+      before = now;
+      now = next;
+    }
+    ASSERT_GE(peaks.size(), 2u);
+    const double ratio = peaks[1].stretch / peaks[0].stretch, period = peaks[1].time - peaks[0].time;
+    const double expectedRatio = std::exp(-2.0 * std::numbers::pi * beta / damping);
+    const double expectedPeriod = 2.0 * std::numbers::pi / (omega * damping);
+    std::printf("damped bond, beta %.2f: peak ratio %.6f (closed form %.6f), period %.6e s (%.6e s)\n", beta, ratio, expectedRatio,
+                period, expectedPeriod);
+    EXPECT_NEAR(ratio / expectedRatio, 1.0, 2e-3);
+    EXPECT_NEAR(period / expectedPeriod, 1.0, 1e-3);
+    EXPECT_EQ(world.bondCount(), 1u);
+  }
 }
 
 // A sphere hanging from a plane (the current collector) by a bond: under 1e4 g it stays put,

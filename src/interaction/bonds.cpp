@@ -37,6 +37,17 @@ Vec3 relativeSpin(const InteractionScene& scene, const ContactStore& s, std::uin
   return (s.onWall(k) ? Vec3::Zero() : p.angularVelocity[s.b[k]]) - p.angularVelocity[s.a[k]];
 }
 
+/// The dashpots of a damped bond (parallel_bond.hpp) of contact k, deformed along `axis`, at `centre`.
+BondDashpots dashpots(const InteractionScene& scene, const ContactStore& s, std::uint32_t k, const ParallelBond& bond,
+                      const BondSection& section, const Vec3& axis, const Vec3& centre) {
+  const ParticleStore& p = scene.particles;
+  const auto reduced = [](double a, double b) { return a * b / (a + b); };
+  const std::uint32_t a = s.a[k], b = s.b[k];
+  const double mass = s.onWall(k) ? p.mass[a] : reduced(p.mass[a], p.mass[b]);
+  const double moment = s.onWall(k) ? p.inertia[a].minCoeff() : reduced(p.inertia[a].minCoeff(), p.inertia[b].minCoeff());
+  return bondDashpots(bond, section, axis, relativeVelocity(scene, s, k, centre), relativeSpin(scene, s, k), mass, moment);
+}
+
 }  // namespace
 
 std::size_t Interactions::formBonds(const InteractionScene& scene, double gapRatio) {
@@ -79,12 +90,18 @@ void Interactions::addBondLoads(const InteractionScene& scene, std::span<const s
     BondRecord& record = s.bond[k];
     if (!record.intact()) continue;
     const BondPlace place = bondPlace(record.rest, bondPoseA(scene, s, k), bondPoseB(scene, s, k));
-    BondLoads loads = bondLoads(bond, BondSection(record.radius), place.deformation);
+    const BondSection section(record.radius);
+    BondLoads loads = bondLoads(bond, section, place.deformation);
     if (loads.breaks(bond)) {
       record.state = BondRecord::State::Broken;
       loads = {};
       ++broken;
     } else {
+      if (bond.dampingRatio > 0.0) {  // the cement's stresses are the springs'; the dashpots add their loads
+        const BondDashpots d = dashpots(scene, s, k, bond, section, place.deformation.axis, place.centre);
+        loads.force += d.force;
+        loads.moment += d.moment;
+      }
       // The bond's force acts at its centre: about the contact point, its moment joins the pure
       // moment (reduction.cpp sums (point - x) x force + moment).
       if (!s.acting[k]) s.point[k] = place.centre;

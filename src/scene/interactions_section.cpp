@@ -63,14 +63,20 @@ class SceneLawInput final : public LawInput {
 /// `bond`: the pair's parallel bond (mechanics/parallel_bond.hpp, docs/bonds.md).
 ParallelBond readBond(const Reader& r, const YAML::Node& b, const std::string& where) {
   if (!b.IsMap()) {
-    r.fail(b, where, "must be a map {radius_multiplier, normal_stiffness, shear_stiffness, tensile_strength, shear_strength}");
+    r.fail(b, where,
+           "must be a map {radius_multiplier, normal_stiffness, shear_stiffness, tensile_strength, shear_strength, damping_ratio}");
   }
-  r.allowOnly(b, where, {"radius_multiplier", "normal_stiffness", "shear_stiffness", "tensile_strength", "shear_strength"});
+  r.allowOnly(b, where, {"radius_multiplier", "normal_stiffness", "shear_stiffness", "tensile_strength", "shear_strength", "damping_ratio"});
+  const double dampingRatio = r.number(b, "damping_ratio", where, 0.0);
+  if (!(dampingRatio >= 0.0 && dampingRatio <= 1.0)) {
+    r.fail(b["damping_ratio"], where + ".damping_ratio", "must be in [0, 1] (a fraction of each spring's critical damping)");
+  }
   return {.radiusMultiplier = b["radius_multiplier"] ? r.positive(b, "radius_multiplier", where, "-") : 1.0,
           .normalStiffness = r.positive(b, "normal_stiffness", where, "Pa/m"),
           .shearStiffness = r.positive(b, "shear_stiffness", where, "Pa/m"),
           .tensileStrength = r.positive(b, "tensile_strength", where, "Pa"),
-          .shearStrength = r.positive(b, "shear_strength", where, "Pa")};
+          .shearStrength = r.positive(b, "shear_strength", where, "Pa"),
+          .dampingRatio = dampingRatio};
 }
 
 }  // namespace

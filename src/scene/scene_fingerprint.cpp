@@ -61,7 +61,7 @@ SceneFingerprint sceneFingerprint(const Scene& scene) {
           i.curvatureTolerance, i.restitution, i.friction, i.stiffnessScale, i.rollingHysteresis);
     for (const auto& [key, value] : i.lawParameters) h.all(key, value);
     if (const std::optional<ParallelBond>& b = i.bond) {
-      h.all(b->radiusMultiplier, b->normalStiffness, b->shearStiffness, b->tensileStrength, b->shearStrength);
+      h.all(b->radiusMultiplier, b->normalStiffness, b->shearStiffness, b->tensileStrength, b->shearStrength, b->dampingRatio);
     }
   }
   next();

@@ -10,6 +10,14 @@
 // shear stress on its cross-section reaches the strength (their Eq. 11):
 //   sigma = F_n / A + |M_b| R / I >= sigma_c   or   tau = |F_s| / A + |M_t| R / J >= tau_c.
 // Its stored energy is (1/2)(k_n A u_n^2 + k_s A |u_s|^2 + k_s J theta_t^2 + k_n I |theta_b|^2).
+// Beside each spring, optionally, a dashpot at beta times its critical coefficient (a viscous
+// binder; docs/bonds.md, "Damping"): against B's velocity relative to A at the bond's centre,
+// split along and across the axis, and against B's spin relative to A's,
+//   F = -2 beta (sqrt(k_n A m*) v_n + sqrt(k_s A m*) v_s)
+//   M = -2 beta (sqrt(k_s J j*) w_t + sqrt(k_n I j*) w_b),
+// m* the pair's reduced mass and j* its reduced smallest principal moment of inertia (a plane's
+// are infinite: the particle's own): a bonded pair's relative stretch is then a damped oscillator
+// of damping ratio beta exactly, and its other modes at most beta.
 
 #include <algorithm>
 #include <cmath>
@@ -27,6 +35,7 @@ struct ParallelBond {
   double shearStiffness = 0.0;    ///< k_s per area (Pa/m), > 0
   double tensileStrength = 0.0;   ///< sigma_c (Pa), > 0
   double shearStrength = 0.0;     ///< tau_c (Pa), > 0
+  double dampingRatio = 0.0;      ///< beta (-), in [0, 1]: 0 is Potyondy & Cundall's undamped bond
 
   /// std::invalid_argument naming the first value out of range.
   void check() const {
@@ -38,6 +47,7 @@ struct ParallelBond {
     positive(shearStiffness, "shear_stiffness");
     positive(tensileStrength, "tensile_strength");
     positive(shearStrength, "shear_strength");
+    if (!(dampingRatio >= 0.0 && dampingRatio <= 1.0)) throw std::invalid_argument("damping_ratio must be in [0, 1]");
   }
 };
 
@@ -88,6 +98,20 @@ inline BondLoads bondLoads(const ParallelBond& bond, const BondSection& s, const
   l.energy = 0.5 * (kn * s.area * d.extension * d.extension + ks * s.area * d.shear.squaredNorm() +
                     ks * s.polar * d.twist * d.twist + kn * s.inertia * d.bending.squaredNorm());
   return l;
+}
+
+/// The bond's dashpots on B (A carries the opposite), for B's velocity `velocity` and spin `spin`
+/// relative to A's at the bond's centre, the pair's reduced mass and reduced smallest principal
+/// moment of inertia.
+struct BondDashpots {
+  Vec3 force = Vec3::Zero(), moment = Vec3::Zero();
+};
+inline BondDashpots bondDashpots(const ParallelBond& bond, const BondSection& s, const Vec3& axis, const Vec3& velocity,
+                                 const Vec3& spin, double reducedMass, double reducedMoment) {
+  const double b = 2.0 * bond.dampingRatio, kn = bond.normalStiffness, ks = bond.shearStiffness;
+  const Vec3 vn = velocity.dot(axis) * axis, wt = spin.dot(axis) * axis;
+  return {-b * (std::sqrt(kn * s.area * reducedMass) * vn + std::sqrt(ks * s.area * reducedMass) * (velocity - vn)),
+          -b * (std::sqrt(ks * s.polar * reducedMoment) * wt + std::sqrt(kn * s.inertia * reducedMoment) * (spin - wt))};
 }
 
 /// The fastest angular frequency (rad/s) of a body of mass m, smallest principal moment of inertia
