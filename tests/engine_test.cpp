@@ -594,9 +594,12 @@ TEST(Engine, SceneErrorsNameLineKeyAndWhatIsAllowed) {
   expectSceneError(withInteraction("    bond: {normal_stiffness: 1.0e12, shear_stiffness: 4.0e11, tensile_strength: 1.0e6, "
                                    "shear_strength: 2.0e6, radius: 1}\n"),
                    "'interactions[0].bond.radius': unknown key (allowed: radius_multiplier, normal_stiffness, shear_stiffness, "
-                   "tensile_strength, shear_strength)");
+                   "tensile_strength, shear_strength, damping_ratio)");
   expectSceneError(withInteraction("    bond: {normal_stiffness: 0, shear_stiffness: 4.0e11, tensile_strength: 1.0e6, shear_strength: 2.0e6}\n"),
                    "'interactions[0].bond.normal_stiffness': must be > 0 (Pa/m)");
+  expectSceneError(withInteraction("    bond: {normal_stiffness: 1.0e12, shear_stiffness: 4.0e11, tensile_strength: 1.0e6, "
+                                   "shear_strength: 2.0e6, damping_ratio: 1.5}\n"),
+                   "'interactions[0].bond.damping_ratio': must be in [0, 1] (a fraction of each spring's critical damping)");
   expectSceneError(replaced(bedScene, "{name: settle, duration: 0.2}", "{name: settle, duration: 0.2, form_bonds: {gap: 0.01}}"),
                    "'stages[0].form_bonds': no interaction has a bond");
   expectSceneError(replaced(withInteraction(bond), "{name: settle, duration: 0.2}", "{name: settle, duration: 0.2, form_bonds: {gap: -1}}"),
