@@ -27,7 +27,6 @@ std::vector<CompressionRecord::Press> CompressionRecord::split() const {
   }
   if (most > 0.0) ranges.push_back(current);
   if (ranges.empty()) return ranges;
-  ranges.back().end = samples_.size();
   double largest = 0.0;
   for (const Press& r : ranges) largest = std::max(largest, pressure(r.peak));
   std::vector<Press> presses;
