@@ -246,7 +246,8 @@ void groupKernel(std::span<const std::uint32_t> members, const ContactModel& pai
         if (force.acting) stored = storedEnergy(law, contact, g.overlap, history.normal, force.normal - force.normalDamping);
       }
       invalid += !force.valid;
-      deep += force.acting && g.overlap > 0.5 * motion.volumeRadiusA;
+      const double smallerRadius = withWall(Kind) ? motion.volumeRadiusA : std::min(motion.volumeRadiusA, motion.volumeRadiusB);
+      deep += force.acting && g.overlap > 0.5 * smallerRadius;
     } else {
       lost += std::isinf(range);  // an adhesive contact its law still held
       history = {};

@@ -232,7 +232,8 @@ template <bool OnWall>
     s.force[k] = take(l.force, j);
     s.load[k] = {l.normalForce[j], l.damping[j], l.stiffness[j], l.area[j], false};
     counts.degenerate += l.degenerate[j] != 0;
-    counts.deep += acting && l.overlap[j] > 0.5 * l.rA[j];
+    const double smallerRadius = OnWall ? l.rA[j] : std::min(l.rA[j], l.rB[j]);
+    counts.deep += acting && l.overlap[j] > 0.5 * smallerRadius;
   }
   if constexpr (!OnWall) counts.calls += count;  // the detector's calls: particle pairs only
 }

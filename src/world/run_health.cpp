@@ -59,7 +59,7 @@ std::string RunHealth::afterStep(const World& world) {
   deepStreak_ = deep > lastDeepOverlaps_ ? deepStreak_ + 1 : 0;
   lastDeepOverlaps_ = deep;
   if (deepStreak_ >= 10) {
-    std::snprintf(text, sizeof text, "deep overlaps (deeper than half a volume radius) keep growing: %lld so far", deep);
+    std::snprintf(text, sizeof text, "deep overlaps (deeper than half the smaller volume radius) keep growing: %lld so far", deep);
     return text;
   }
   return {};
