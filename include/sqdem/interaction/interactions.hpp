@@ -42,7 +42,7 @@ struct ContactStatistics {
   long long detectorFailures = 0;  ///< statuses other than Converged/Separated (contact skipped)
   /// detectorFailures by ContactStatus (index = the status's value).
   std::array<long long, contactStatusCount> failuresByStatus{};
-  long long deepOverlaps = 0;      ///< contacts with overlap > 0.5 R_vol (time step too large?)
+  long long deepOverlaps = 0;      ///< contacts with overlap > 0.5 x the smaller R_vol (time step too large?)
   /// Adhesive contacts lost while their law still held them (the detector gave no geometry
   /// within its cut-off): should stay 0, the cut-off covers ContactModel::reach.
   long long lostAdhesions = 0;
