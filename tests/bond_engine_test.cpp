@@ -77,6 +77,16 @@ TEST(BondEngine, PairInTensionIsKnAu) {
   EXPECT_EQ(world.bondCount(), 1u);
 }
 
+// Bonds formed on a World that has not computed its forces yet find their pairs all the same
+// (World::formBonds computes the candidates first): a chain of four, three bonds.
+TEST(BondEngine, FormsBondsBeforeTheFirstComputation) {
+  omp_set_num_threads(1);
+  World world = bondedWorld(Superquadric::sphere(r));
+  for (int i = 0; i < 4; ++i) world.addParticle(0, 0, Vec3(i * (2.0 + 1e-4) * r, 0.0, 0.0), Quat::Identity());
+  EXPECT_EQ(world.formBonds(0.01), 3u);
+  EXPECT_EQ(world.bondCount(), 3u);
+}
+
 // Breakage at the strength: stretched to u_c (1 -+ 1e-9), u_c = sigma_c / k_n, the bond holds,
 // then breaks (counted) and carries nothing.
 TEST(BondEngine, BreaksAtTheTensileStrength) {

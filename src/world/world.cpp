@@ -388,6 +388,7 @@ void World::enableEnergyLedger() {
 
 std::size_t World::formBonds(double gapRatio) {
   if (!(gapRatio >= 0.0)) throw std::invalid_argument("World: a bond's gap ratio must be >= 0");
+  if (!forcesCurrent_) computeForces();  // the candidates bonds form among
   const std::size_t formed = interactions_.formBonds(interactionScene(), gapRatio);
   return static_cast<std::size_t>(communicator_->sum(static_cast<long long>(formed)));
 }

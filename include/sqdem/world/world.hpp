@@ -150,9 +150,9 @@ class World {
   /// Computes contacts and forces at the current state (no integration).
   void computeForces();
   /// Forms bonds (docs/bonds.md) between the pairs whose contact model has one and whose gap is
-  /// at most gapRatio times the smaller volume radius, where the last computation's candidates
-  /// are (after a step or computeForces); returns how many formed, over every rank. Their loads
-  /// act from the next computation.
+  /// at most gapRatio times the smaller volume radius, among the last computation's candidates
+  /// (computed first if there was none yet); returns how many formed, over every rank. Their
+  /// loads act from the next computation. Collective.
   std::size_t formBonds(double gapRatio);
   /// Intact bonds, over every rank.
   std::size_t bondCount() const;
