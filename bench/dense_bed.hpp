@@ -1,7 +1,8 @@
 #pragma once
 // The benchmarks' dense bed: a fully periodic simple-cubic lattice of one superquadric (affinely
 // stretched for ellipsoids, so each particle touches its six neighbours with a 0.5 % overlap,
-// mean coordination ~6), small random tilts and velocities.
+// mean coordination ~6), small random tilts and velocities; or, still, touching without overlap
+// at rest (nothing moves: for costs that must not depend on the motion).
 
 #include <array>
 #include <random>
@@ -30,8 +31,8 @@ inline const std::array<Case, 4>& denseBedCases() {
 }
 
 /// cells: the lattice's particles along x, y and z.
-inline World denseBed(const Case& c, const Eigen::Vector3i& cells, std::uint64_t seed) {
-  const Vec3 spacing = 2.0 * 0.995 * c.shape.halfExtents();
+inline World denseBed(const Case& c, const Eigen::Vector3i& cells, std::uint64_t seed, bool still = false) {
+  const Vec3 spacing = 2.0 * (still ? 1.0 : 0.995) * c.shape.halfExtents();
   Domain domain;
   domain.hi = cells.cast<double>().cwiseProduct(spacing);
   domain.periodic = {true, true, true};
@@ -48,7 +49,7 @@ inline World denseBed(const Case& c, const Eigen::Vector3i& cells, std::uint64_t
         const Vec3 axis(tilt(rng), tilt(rng), tilt(rng));
         const Quat q = axis.norm() > 0 ? Quat(Eigen::AngleAxisd(axis.norm(), axis.normalized())) : Quat::Identity();
         const std::size_t n = world.addParticle(0, 0, (Vec3(i, j, k) + Vec3::Constant(0.5)).cwiseProduct(spacing), q);
-        world.particles().velocity[n] = Vec3(speed(rng), speed(rng), speed(rng));
+        if (!still) world.particles().velocity[n] = Vec3(speed(rng), speed(rng), speed(rng));
       }
     }
   }
@@ -57,6 +58,8 @@ inline World denseBed(const Case& c, const Eigen::Vector3i& cells, std::uint64_t
 }
 
 /// edge^3 particles.
-inline World denseBed(const Case& c, int edge, std::uint64_t seed) { return denseBed(c, Eigen::Vector3i::Constant(edge), seed); }
+inline World denseBed(const Case& c, int edge, std::uint64_t seed, bool still = false) {
+  return denseBed(c, Eigen::Vector3i::Constant(edge), seed, still);
+}
 
 }  // namespace sqdem

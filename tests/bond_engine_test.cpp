@@ -77,6 +77,29 @@ TEST(BondEngine, PairInTensionIsKnAu) {
   EXPECT_EQ(world.bondCount(), 1u);
 }
 
+// A bond acts beside the pair's contact law (docs/bonds.md): two spheres overlapping by
+// delta = 1e-3 R and bonded where they are (the bond's rest state: it carries nothing) push apart
+// with Hertz's 4/3 E* sqrt(R*) delta^1.5 (E* = E / (2 (1 - nu^2)), R* = R / 2) as they do unbonded.
+TEST(BondEngine, BondedPairInContactKeepsItsHertzForce) {
+  omp_set_num_threads(1);
+  const double delta = 1e-3 * r, hertz = 4.0 / 3.0 * E / (2.0 * (1.0 - nu * nu)) * std::sqrt(0.5 * r) * std::pow(delta, 1.5);
+  for (const bool bonded : {false, true}) {
+    World world = bondedWorld(Superquadric::sphere(r));
+    world.addParticle(0, 0, Vec3::Zero(), Quat::Identity());
+    world.addParticle(0, 0, Vec3(2.0 * r - delta, 0.0, 0.0), Quat::Identity());
+    world.computeForces();
+    if (bonded) {
+      ASSERT_EQ(world.formBonds(0.01), 1u);
+      world.computeForces();
+    }
+    const ParticleStore& p = world.particles();
+    for (std::size_t i = 0; i < 2; ++i) {
+      const double sign = p.id[i] == 0 ? -1.0 : 1.0;
+      EXPECT_NEAR((p.force[i] - sign * hertz * Vec3::UnitX()).norm(), 0.0, 1e-9 * hertz) << "bonded " << bonded << ", particle " << p.id[i];
+    }
+  }
+}
+
 // Bonds formed on a World that has not computed its forces yet find their pairs all the same
 // (World::formBonds computes the candidates first): a chain of four, three bonds.
 TEST(BondEngine, FormsBondsBeforeTheFirstComputation) {
