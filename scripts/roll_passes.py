@@ -24,13 +24,12 @@ LEDGER = (('work', 'work_bodies_J'), ('sliding', 'tangential_dissipation_J'),
 
 def passes(rows):
     """The rows of each pass stage, in order, with the row before it (the pass's start)."""
-    out, start = [], None
+    out = []
     for i, row in enumerate(rows):
         if not row['stage'].startswith('pass'):
             continue
-        if start is None or rows[i - 1]['stage'] != row['stage']:
+        if i == 0 or rows[i - 1]['stage'] != row['stage']:
             out.append((row['stage'], rows[i - 1] if i > 0 else row, []))
-            start = i
         out[-1][2].append(row)
     return out
 
