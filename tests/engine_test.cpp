@@ -14,6 +14,7 @@
 #include "sqdem/scene/particle_file.hpp"
 #include "sqdem/scene/scene_loader.hpp"
 #include "sqdem/scene/build_world.hpp"
+#include "sqdem/scene/stage_runner.hpp"
 #include "sqdem/archive/checkpoint_file.hpp"
 #include "sqdem/world/packing_measures.hpp"
 
@@ -568,7 +569,7 @@ TEST(Engine, SceneErrorsNameLineKeyAndWhatIsAllowed) {
                    "'interactions[0]': becker_kamlah needs yield_strength (Pa): give it here or in both materials");
   expectSceneError(withInteraction("    lambda_max: 2.5\n"),
                    "'interactions[0].lambda_max': unknown key (allowed: materials, normal, tangential, eccentricity, cap_factor, "
-                   "curvature_tolerance, reduced_stiffness, restitution, rolling_hysteresis, friction, bond, and for elliptic_hertz: roughness); "
+                   "curvature_tolerance, reduced_stiffness, restitution, rolling_hysteresis, friction, bond, deep_overlaps, and for elliptic_hertz: roughness); "
                    "'lambda_max' is a key of normal: becker_kamlah");
   expectSceneError(withInteraction("    roughness: {sigma: 1.0e-6}\n"), "'interactions[0].roughness.asperity_count': missing");
   expectSceneError(withInteraction("    curvature_tolerance: 0.5\n"),
@@ -576,7 +577,7 @@ TEST(Engine, SceneErrorsNameLineKeyAndWhatIsAllowed) {
   expectSceneError(withInteraction("    normal: nan_adhesive\n    roughness: {sigma: 1.0e-6, asperity_count: 10}\n"
                                    "    surface_energy: 0.1\n    yield_pressure: 1.0e6\n"),
                    "'interactions[0].roughness': unknown key (allowed: materials, normal, tangential, eccentricity, cap_factor, "
-                   "curvature_tolerance, reduced_stiffness, restitution, rolling_hysteresis, friction, bond, and for nan_adhesive: surface_energy, "
+                   "curvature_tolerance, reduced_stiffness, restitution, rolling_hysteresis, friction, bond, deep_overlaps, and for nan_adhesive: surface_energy, "
                    "yield_pressure, elastic_stiffness, plastic_stiffness); 'roughness' is a key of normal: elliptic_hertz, "
                    "volume_sphere_hertz, elliptic_jkr (Greenwood-Williamson roughness is built on elastic asperities");
   expectSceneError(withInteraction("    normal: jamari\n    hardness: 1.0e6\n    surface_energy: 0.1\n"),
@@ -587,6 +588,7 @@ TEST(Engine, SceneErrorsNameLineKeyAndWhatIsAllowed) {
   expectSceneError(withInteraction("    normal: elliptic_jkr\n    surface_energy: -0.1\n"),
                    "'interactions[0].surface_energy': must be > 0 (J/m^2, gamma; W = 2 gamma)");
   expectSceneError(withInteraction("    restitution: 0\n"), "'interactions[0].restitution': must be in (0, 1]");
+  expectSceneError(withInteraction("    deep_overlaps: sometimes\n"), "'interactions[0].deep_overlaps': allowed: trouble, expected");
   // Bonds (docs/bonds.md): their keys, a stage forming them without any, a gap beyond the skin.
   const std::string bond = "    bond: {normal_stiffness: 1.0e12, shear_stiffness: 4.0e11, tensile_strength: 1.0e6, shear_strength: 2.0e6}\n";
   expectSceneError(withInteraction("    bond: {normal_stiffness: 1.0e12, shear_stiffness: 4.0e11, tensile_strength: 1.0e6}\n"),
@@ -631,6 +633,25 @@ TEST(Engine, TheAutomaticStepResolvesTheStiffestBond) {
   const World soft = buildWorld(loadScene(writeScene("bond_step", replaced(withBond("1.0e6"), "shear_stiffness: 4.0e11", "shear_stiffness: 4.0e5"))));
   EXPECT_GT(soft.bondTimeStep(), soft.rayleighTimeStep());
   EXPECT_EQ(soft.timeStep(), 0.2 * soft.rayleighTimeStep());
+}
+
+// A bond that breaks in tension only beyond the skin (sigma_c / k_n > skin) would leave the
+// neighbour list intact and be lost: the run is told before it starts, naming the interaction
+// and the skin it needs; a stiffer bond, which breaks within the skin, is not warned about.
+TEST(Engine, WarnsOfABondThatCanOutstretchTheSkin) {
+  const auto warnings = [](const std::string& stiffness) {
+    const Scene scene = loadScene(writeScene("bond_skin", replaced(replaced(bedScene, "time_step: 2.0e-6\n", ""), "  - materials: [glass, glass]\n",
+                                                                    "  - materials: [glass, glass]\n    bond: {normal_stiffness: " + stiffness +
+                                                                        ", shear_stiffness: 4.0e8, tensile_strength: 1.0e6, shear_strength: 2.0e6}\n")));
+    const World world = buildWorld(scene);
+    std::string all;
+    for (const std::string& w : planRun(scene, world).warnings) all += w + "\n";
+    return all;
+  };
+  EXPECT_NE(warnings("1.0e9").find("interactions[0].bond breaks in tension at a stretch sigma_c / k_n = 0.001 m, beyond the skin"),
+            std::string::npos)
+      << warnings("1.0e9");
+  EXPECT_EQ(warnings("1.0e12").find("bond breaks"), std::string::npos) << warnings("1.0e12");
 }
 
 }  // namespace

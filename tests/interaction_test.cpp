@@ -360,6 +360,7 @@ TEST(RoundHertzLanes, CoincidentCentresAreDegenerateOnEveryPath) {
 // is A (the count once took A's radius, so a small particle deep in a large one counted or not by
 // the pair's order): a small and a large body, on the round path (spheres) and the general one
 // (ellipsoids along x), overlapping by 0.6 and by 0.4 of the small one's R_vol, in both orders.
+// A model that expects deep overlaps (`deep_overlaps: expected`) counts them apart.
 TEST(DeepOverlaps, CountAgainstTheSmallerVolumeRadiusInEitherOrder) {
   const Material m{1e7, 0.3, 2500.0, 0.3, 0.5};
   const std::array<std::array<Superquadric, 2>, 2> pairs{{{Superquadric::sphere(1e-3), Superquadric::sphere(0.2e-3)},
@@ -368,9 +369,11 @@ TEST(DeepOverlaps, CountAgainstTheSmallerVolumeRadiusInEitherOrder) {
   for (const auto& shapes : pairs) {
     const double small = shapes[1].volumeEquivalentRadius();
     for (const double depth : {0.6, 0.4}) {
-      for (const bool smallFirst : {false, true}) {
+      for (const auto& [smallFirst, expected] : {std::pair{false, false}, {true, false}, {false, true}, {true, true}}) {
         World world({shapes[0], shapes[1]}, {m}, openSpace, 1e-4);
-        world.setContactModel(0, 0, world.defaultContactModel(0, 0));
+        ContactModel model = world.defaultContactModel(0, 0);
+        model.deepOverlapsExpected = expected;
+        world.setContactModel(0, 0, model);
         const double distance = shapes[0].a() + shapes[1].a() - depth * small;  // along x: a is the x semi-axis
         const std::array<Vec3, 2> at{Vec3::Zero(), Vec3(distance, 0.0, 0.0)};
         for (const int k : smallFirst ? std::array<int, 2>{1, 0} : std::array<int, 2>{0, 1}) {
@@ -379,7 +382,10 @@ TEST(DeepOverlaps, CountAgainstTheSmallerVolumeRadiusInEitherOrder) {
         world.computeForces();
         ASSERT_EQ(world.contacts().size(), 1u);
         EXPECT_NEAR(world.contacts().front().overlap(), depth * small, 1e-9 * small);
-        EXPECT_EQ(world.statistics().deepOverlaps, depth > 0.5 ? 1 : 0)
+        const int deep = depth > 0.5 ? 1 : 0;
+        EXPECT_EQ(world.statistics().deepOverlaps, expected ? 0 : deep)
+            << "a/c " << shapes[0].a() / shapes[0].c() << ", overlap " << depth << " R_vol, small body first " << smallFirst;
+        EXPECT_EQ(world.statistics().expectedDeepOverlaps, expected ? deep : 0)
             << "a/c " << shapes[0].a() / shapes[0].c() << ", overlap " << depth << " R_vol, small body first " << smallFirst;
       }
     }

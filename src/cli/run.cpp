@@ -71,6 +71,9 @@ void printSummary(const World& world, const RunReport& report, double wall, cons
               st.detectorCalls, st.detectorCalls ? static_cast<double>(st.detectorIterations) / st.detectorCalls : 0.0,
               st.detectorCalls ? 100.0 * static_cast<double>(st.detectorConfirmations) / st.detectorCalls : 0.0,
               st.detectorFailures, st.deepOverlaps);
+  if (st.expectedDeepOverlaps > 0) {
+    std::printf("  deep overlaps where the scene expects them (deep_overlaps: expected): %lld contact-steps\n", st.expectedDeepOverlaps);
+  }
   if (st.detectorFailures > 0) {
     std::printf("  unresolved by status:");
     for (int k = 0; k < contactStatusCount; ++k) {

@@ -7,6 +7,8 @@
 #include "sqdem/contact/detector.hpp"
 #include "sqdem/interaction/interactions.hpp"
 
+#include "contact_force.hpp"
+
 namespace sqdem {
 namespace {
 
@@ -41,10 +43,9 @@ Vec3 relativeSpin(const InteractionScene& scene, const ContactStore& s, std::uin
 BondDashpots dashpots(const InteractionScene& scene, const ContactStore& s, std::uint32_t k, const ParallelBond& bond,
                       const BondSection& section, const Vec3& axis, const Vec3& centre) {
   const ParticleStore& p = scene.particles;
-  const auto reduced = [](double a, double b) { return a * b / (a + b); };
   const std::uint32_t a = s.a[k], b = s.b[k];
-  const double mass = s.onWall(k) ? p.mass[a] : reduced(p.mass[a], p.mass[b]);
-  const double moment = s.onWall(k) ? p.inertia[a].minCoeff() : reduced(p.inertia[a].minCoeff(), p.inertia[b].minCoeff());
+  const double mass = s.onWall(k) ? p.mass[a] : detail::reduced(p.mass[a], p.mass[b]);
+  const double moment = s.onWall(k) ? p.inertia[a].minCoeff() : detail::reduced(p.inertia[a].minCoeff(), p.inertia[b].minCoeff());
   return bondDashpots(bond, section, axis, relativeVelocity(scene, s, k, centre), relativeSpin(scene, s, k), mass, moment);
 }
 

@@ -11,6 +11,9 @@
 
 namespace sqdem::detail {
 
+/// x y / (x + y): the reduced mass, radius or moment of inertia of two bodies.
+inline double reduced(double x, double y) { return x * y / (x + y); }
+
 /// E* and r_IJ of the contact (radii and factors left to the caller).
 inline NormalContact sizedContact(const ContactModel& model, const ContactKinematics& motion) {
   NormalContact c;
@@ -21,8 +24,13 @@ inline NormalContact sizedContact(const ContactModel& model, const ContactKinema
 
 /// R* = rA rB / (rA + rB) of the volume-equivalent spheres (m; a wall: rA).
 inline double reducedRadius(const ContactKinematics& motion) {
-  return motion.volumeRadiusB > 0.0 ? motion.volumeRadiusA * motion.volumeRadiusB / (motion.volumeRadiusA + motion.volumeRadiusB)
-                                    : motion.volumeRadiusA;
+  return motion.volumeRadiusB > 0.0 ? reduced(motion.volumeRadiusA, motion.volumeRadiusB) : motion.volumeRadiusA;
+}
+
+/// A deep overlap (ContactStatistics::deepOverlaps): deeper than half the smaller volume radius
+/// of the two bodies; radiusB 0 for a wall, which has none.
+inline bool deepOverlap(double overlap, double radiusA, double radiusB) {
+  return overlap > 0.5 * (radiusB > 0.0 ? std::min(radiusA, radiusB) : radiusA);
 }
 
 /// The contact of the volume-equivalent spheres: a circle, Ri = Rj = R*, Rc = R*/2.

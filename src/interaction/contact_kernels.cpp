@@ -129,7 +129,7 @@ template <PairKind Kind>
     motion.relativeVelocity = p.velocity[b] + p.angularVelocity[b].cross(point - p.position[b]) - velocityA;
     motion.volumeRadiusB = volumeRadius(b);
     motion.angularVelocityB = p.angularVelocity[b];
-    motion.effectiveMass = p.mass[a] * p.mass[b] / (p.mass[a] + p.mass[b]);
+    motion.effectiveMass = detail::reduced(p.mass[a], p.mass[b]);
   }
   return motion;
 }
@@ -246,8 +246,7 @@ void groupKernel(std::span<const std::uint32_t> members, const ContactModel& pai
         if (force.acting) stored = storedEnergy(law, contact, g.overlap, history.normal, force.normal - force.normalDamping);
       }
       invalid += !force.valid;
-      const double smallerRadius = withWall(Kind) ? motion.volumeRadiusA : std::min(motion.volumeRadiusA, motion.volumeRadiusB);
-      deep += force.acting && g.overlap > 0.5 * smallerRadius;
+      deep += force.acting && detail::deepOverlap(g.overlap, motion.volumeRadiusA, motion.volumeRadiusB);
     } else {
       lost += std::isinf(range);  // an adhesive contact its law still held
       history = {};
@@ -288,7 +287,7 @@ void groupKernel(std::span<const std::uint32_t> members, const ContactModel& pai
     statistics.detectorConfirmations += confirmations;
     statistics.detectorFailures += failures;
     for (int k = 0; k < contactStatusCount; ++k) statistics.failuresByStatus[k] += byStatus[k];
-    statistics.deepOverlaps += deep;
+    (model.deepOverlapsExpected ? statistics.expectedDeepOverlaps : statistics.deepOverlaps) += deep;
     statistics.lostAdhesions += lost;
     statistics.lawFailures += invalid;
   }

@@ -232,8 +232,7 @@ template <bool OnWall>
     s.force[k] = take(l.force, j);
     s.load[k] = {l.normalForce[j], l.damping[j], l.stiffness[j], l.area[j], false};
     counts.degenerate += l.degenerate[j] != 0;
-    const double smallerRadius = OnWall ? l.rA[j] : std::min(l.rA[j], l.rB[j]);
-    counts.deep += acting && l.overlap[j] > 0.5 * smallerRadius;
+    counts.deep += acting && deepOverlap(l.overlap[j], l.rA[j], OnWall ? 0.0 : l.rB[j]);
   }
   if constexpr (!OnWall) counts.calls += count;  // the detector's calls: particle pairs only
 }
@@ -287,7 +286,7 @@ void roundHertzContacts(SimdPath path, PairKind kind, std::span<const std::uint3
     statistics.detectorCalls += counts.calls;
     statistics.detectorFailures += counts.degenerate;
     statistics.failuresByStatus[static_cast<int>(ContactStatus::Degenerate)] += counts.degenerate;
-    statistics.deepOverlaps += counts.deep;
+    (model.deepOverlapsExpected ? statistics.expectedDeepOverlaps : statistics.deepOverlaps) += counts.deep;
   }
 }
 

@@ -13,10 +13,21 @@ bool alongAnAxis(const Wall& w) {
   return w.is<PlaneWall>() && w.get<PlaneWall>().plane.normal.cwiseAbs().maxCoeff() == 1.0;
 }
 
+bool expectsDeepOverlaps(const World& world) {
+  const std::uint32_t n = static_cast<std::uint32_t>(world.materials().size());
+  for (std::uint32_t a = 0; a < n; ++a) {
+    for (std::uint32_t b = a; b < n; ++b) {
+      if (world.contactModel(a, b).deepOverlapsExpected) return true;
+    }
+  }
+  return false;
+}
+
 }  // namespace
 
 RunLog::RunLog(const std::filesystem::path& path, const World& world, std::optional<std::size_t> plate)
-    : path_(path), plate_(plate), bonds_(world.interactions().store().withBonds) {
+    : path_(path), plate_(plate), bonds_(world.interactions().store().withBonds),
+      expectedDeep_(expectsDeepOverlaps(world)) {
   if (world.communicator().rank() != 0) {
     out_.setstate(std::ios::badbit);  // the other ranks' rows go nowhere
     return;
@@ -37,6 +48,7 @@ RunLog::RunLog(const std::filesystem::path& path, const World& world, std::optio
   out_ << ",yielded_fraction,largest_overlap_ratio";
   if (plate_) out_ << ",plate_gap_m,plate_pressure_Pa,porosity";
   if (bonds_) out_ << ",bonds,bonds_broken";
+  if (expectedDeep_) out_ << ",expected_deep_overlaps";
   if (world.energyLedger()) {
     out_ << ",work_bodies_J,work_gravity_J,elastic_energy_J,plastic_dissipation_J,damping_dissipation_J,tangential_dissipation_J"
             ",drag_dissipation_J,energy_residual_J";
@@ -67,6 +79,7 @@ std::optional<PlateMeasures> RunLog::row(const World& world, long step, const st
     out_ << ',' << plate->gap << ',' << plate->pressure << ',' << plate->porosity;
   }
   if (bonds_) out_ << ',' << world.bondCount() << ',' << world.totalStatistics().bondsBroken;
+  if (expectedDeep_) out_ << ',' << world.totalStatistics().expectedDeepOverlaps;
   if (const auto& e = world.energyLedger()) {
     out_ << ',' << e->bodies << ',' << e->gravity << ',' << e->stored << ',' << e->plastic() << ',' << e->damping << ','
          << e->tangential << ',' << e->drag << ',' << e->residual(world.kineticEnergy());

@@ -228,6 +228,7 @@ World buildWorld(const Scene& scene) {
     // F_C and xi_crit of the rolling resistance use the real material.
     if (in.rollingHysteresis > 0.0) model.rolling = HaervigRollingResistance{in.rollingHysteresis, model.effectiveModulus};
     model.bond = in.bond;
+    model.deepOverlapsExpected = in.deepOverlapsExpected;
     model.effectiveModulus *= in.stiffnessScale;
     model.tangential.effectiveShear *= in.stiffnessScale;
     const std::string where = scene.path + ": interactions[" + std::to_string(&in - scene.interactions.data()) + "]";

@@ -93,7 +93,7 @@ void readInteractions(const Reader& r, const YAML::Node& root, Scene& scene) {
     const std::vector<std::string_view> pairKeys{"materials",         "normal",      "tangential",         "eccentricity",
                                                  "cap_factor",        "curvature_tolerance", "reduced_stiffness",
                                                  "restitution",       "rolling_hysteresis",  "friction",
-                                                 "bond"};
+                                                 "bond",              "deep_overlaps"};
     r.uniqueKeys(in, where);
     const YAML::Node pair = in["materials"];
     if (!pair || !pair.IsSequence() || pair.size() != 2) r.fail(pair ? pair : in, where + ".materials", "must be a pair [material, material]");
@@ -146,6 +146,7 @@ void readInteractions(const Reader& r, const YAML::Node& root, Scene& scene) {
              "needs normal: haervig_jkr (001's rolling resistance, Eqs. 18-22, is built on its F_C and a_0)");
     }
     if (in["bond"]) spec.bond = readBond(r, in["bond"], where + ".bond");
+    spec.deepOverlapsExpected = r.choice(in, "deep_overlaps", where, {{"trouble", false}, {"expected", true}}, false);
     scene.interactions.push_back(spec);
   }
   for (std::size_t a = 0; a < nm; ++a) {

@@ -48,7 +48,7 @@ RunPlan planRun(const Scene& scene, const World& world) {
   RunPlan plan;
   const double stable = automaticTimeStep(scene, world, 0.2), dt = world.timeStep();
   plan.rayleighTime = rayleighTime(scene, world);
-  char text[320];
+  char text[512];
   if (scene.timeStep && dt > stable) {
     std::snprintf(text, sizeof text, "'time_step': %.4g s is %.3g x the stable estimate %.4g s (the automatic step: "
                   "0.2 x the Rayleigh time of the smallest particle, at most 0.2 / omega of the stiffest bond and a declared impact's collision time over "
@@ -63,6 +63,18 @@ RunPlan planRun(const Scene& scene, const World& world) {
     std::snprintf(text, sizeof text, "%zu particles: their surfaces are not drawn by default above %zu (set "
                   "output.surface_resolution N to draw them, 6 N^2 quads each per frame); the centres are written as always", n,
                   surfacesByDefaultUpTo);
+    plan.warnings.emplace_back(text);
+  }
+  // A bond stretched beyond the skin leaves the neighbour list intact and is lost (counted); in
+  // pure tension it breaks at the stretch sigma_c / k_n (parallel_bond.hpp).
+  for (std::size_t k = 0; k < scene.interactions.size(); ++k) {
+    const std::optional<ParallelBond>& bond = scene.interactions[k].bond;
+    const double stretch = bond ? bond->tensileStrength / bond->normalStiffness : 0.0;
+    if (stretch <= world.neighbourList().skin()) continue;
+    std::snprintf(text, sizeof text, "%s: interactions[%zu].bond breaks in tension at a stretch sigma_c / k_n = %.3g m, beyond "
+                  "the skin %.3g m: a bond stretched further leaves the neighbour list intact and is lost (the summary counts "
+                  "them); raise 'skin' to %.3g m to keep every bond", scene.path.c_str(), k, stretch, world.neighbourList().skin(),
+                  stretch);
     plan.warnings.emplace_back(text);
   }
   // A domain the particles fill to less than 1e-6 is most likely a unit slip (domain in m,

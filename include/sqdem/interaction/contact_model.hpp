@@ -48,6 +48,10 @@ struct ContactModel {
   std::optional<HaervigRollingResistance> rolling;  ///< with normal: haervig_jkr only
   /// The pair's bonds, where they form (World::formBonds); they act beside the contact law.
   std::optional<ParallelBond> bond;
+  /// Overlaps deeper than half the smaller volume radius belong to the model (a soft filler
+  /// squeezed between hard grains, scene key `deep_overlaps: expected`): counted apart
+  /// (ContactStatistics::expectedDeepOverlaps), not taken for a too-large time step.
+  bool deepOverlapsExpected = false;
   /// Bound of the normal law's range (m): the largest gap any of its contacts acts across
   /// (World::setContactModel sets it from the particle sizes).
   double reach = 0.0;

@@ -43,6 +43,7 @@ struct ContactStatistics {
   /// detectorFailures by ContactStatus (index = the status's value).
   std::array<long long, contactStatusCount> failuresByStatus{};
   long long deepOverlaps = 0;      ///< contacts with overlap > 0.5 x the smaller R_vol (time step too large?)
+  long long expectedDeepOverlaps = 0;  ///< the same, of models that expect them (ContactModel::deepOverlapsExpected)
   /// Adhesive contacts lost while their law still held them (the detector gave no geometry
   /// within its cut-off): should stay 0, the cut-off covers ContactModel::reach.
   long long lostAdhesions = 0;
@@ -55,7 +56,8 @@ struct ContactStatistics {
   /// Calls f(counter) for every counter, in a fixed order (sums, reductions over ranks).
   template <typename Statistics, typename F>
   static void forEachCount(Statistics& s, F&& f) {
-    for (auto* count : {&s.detectorCalls, &s.detectorIterations, &s.detectorConfirmations, &s.detectorFailures, &s.deepOverlaps, &s.lostAdhesions,
+    for (auto* count : {&s.detectorCalls, &s.detectorIterations, &s.detectorConfirmations, &s.detectorFailures, &s.deepOverlaps, &s.expectedDeepOverlaps,
+                        &s.lostAdhesions,
                         &s.lawFailures, &s.bondsBroken, &s.lostBonds}) {
       f(*count);
     }

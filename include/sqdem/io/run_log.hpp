@@ -11,7 +11,9 @@
 // torque about that point wallk_tx_Nm, _ty_Nm, _tz_Nm; yielded_fraction and
 // largest_overlap_ratio (packing_measures.hpp); with a pressing plate
 // (scene/compression_report.hpp) plate_gap_m, plate_pressure_Pa and porosity. With bonds
-// (docs/bonds.md), the intact ones (bonds) and those broken since the start (bonds_broken). With an energy
+// (docs/bonds.md), the intact ones (bonds) and those broken since the start (bonds_broken). With
+// an interaction that expects deep overlaps (`deep_overlaps: expected`), their contact-steps
+// since the start (expected_deep_overlaps). With an energy
 // ledger (world/energy_ledger.hpp), its terms since the start: work_bodies_J, work_gravity_J,
 // elastic_energy_J (U now), plastic_dissipation_J, damping_dissipation_J,
 // tangential_dissipation_J, drag_dissipation_J and energy_residual_J.
@@ -42,6 +44,7 @@ class RunLog {
   std::ofstream out_;
   std::optional<std::size_t> plate_;
   bool bonds_ = false;  ///< the world's contacts may carry bonds
+  bool expectedDeep_ = false;  ///< a contact model expects deep overlaps (ContactModel::deepOverlapsExpected)
 };
 
 }  // namespace sqdem

@@ -58,6 +58,7 @@ struct InteractionSpec {
   double stiffnessScale = 1.0;  ///< reduced-stiffness factor E_mod/E (001 Eq. 24)
   double rollingHysteresis = 0.0;  ///< dgamma/gamma of the rolling resistance (0: off, needs haervig_jkr)
   std::optional<ParallelBond> bond;  ///< the pair's bonds, where a stage forms them (`bond`)
+  bool deepOverlapsExpected = false;  ///< `deep_overlaps: expected` (ContactModel::deepOverlapsExpected)
 };
 
 /// A wall as the scene gives it (walls_section.cpp): the engine's wall at the start, and a mesh
