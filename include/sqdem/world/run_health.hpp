@@ -12,7 +12,8 @@
 //    past this bound within a few dozen steps. State set between steps (scene/simulation.hpp)
 //    adds the kinetic energy it gave, and after the next step the elastic energy of the
 //    contacts then (the overlaps a moved particle made), to the budget (stateEdited);
-//  - growing deep overlaps: contacts deeper than half a volume radius in 10 consecutive checks.
+//  - growing deep overlaps: contacts deeper than half the smaller volume radius in 10
+//    consecutive checks (ContactStatistics::deepOverlaps: not those a model expects).
 
 #include <cstdint>
 #include <string>
