@@ -1,0 +1,151 @@
+#include "sqdem/analysis/pore_diffusion.hpp"
+
+#include <Eigen/IterativeLinearSolvers>
+#include <Eigen/SparseCore>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <stdexcept>
+
+namespace sqdem {
+namespace {
+
+/// A voxel's neighbours on the image: a voxel, a reservoir, or nothing (a closed face).
+struct Grid {
+  const VoxelImage& image;
+  int axis;
+  bool periodic;
+
+  static constexpr std::int64_t inlet = -1, outlet = -2, closed = -3;
+
+  std::array<int, 3> coordinates(std::size_t v) const {
+    const auto nx = static_cast<std::size_t>(image.size[0]), ny = static_cast<std::size_t>(image.size[1]);
+    return {static_cast<int>(v % nx), static_cast<int>((v / nx) % ny), static_cast<int>(v / (nx * ny))};
+  }
+  /// The neighbour of voxel c one step (s = -1, +1) along direction d.
+  std::int64_t neighbour(std::array<int, 3> c, int d, int s) const {
+    c[d] += s;
+    if (c[d] < 0 || c[d] >= image.size[d]) {
+      if (d == axis) return c[d] < 0 ? inlet : outlet;
+      if (!periodic) return closed;
+      c[d] = (c[d] + image.size[d]) % image.size[d];
+    }
+    return static_cast<std::int64_t>(image.index(c[0], c[1], c[2]));
+  }
+  /// D0 A / d across a face normal to d, D0 = 1.
+  double conductance(int d) const {
+    const Vec3& h = image.voxel;
+    return h[(d + 1) % 3] * h[(d + 2) % 3] / h[d];
+  }
+};
+
+/// The pore voxels a flood from the reservoir `from` reaches.
+std::vector<std::uint8_t> reachedFrom(const Grid& grid, std::int64_t from) {
+  const VoxelImage& image = grid.image;
+  std::vector<std::uint8_t> reached(image.count(), 0);
+  std::vector<std::size_t> front;
+  for (std::size_t v = 0; v < image.count(); ++v) {
+    const std::array<int, 3> c = grid.coordinates(v);
+    if (image.pore[v] && (grid.neighbour(c, grid.axis, -1) == from || grid.neighbour(c, grid.axis, +1) == from)) {
+      reached[v] = 1;
+      front.push_back(v);
+    }
+  }
+  while (!front.empty()) {
+    const std::size_t v = front.back();
+    front.pop_back();
+    const std::array<int, 3> c = grid.coordinates(v);
+    for (int d = 0; d < 3; ++d) {
+      for (const int s : {-1, 1}) {
+        const std::int64_t w = grid.neighbour(c, d, s);
+        if (w >= 0 && image.pore[w] && !reached[w]) {
+          reached[w] = 1;
+          front.push_back(static_cast<std::size_t>(w));
+        }
+      }
+    }
+  }
+  return reached;
+}
+
+}  // namespace
+
+PoreDiffusion solvePoreDiffusion(const VoxelImage& image, int axis, bool periodic, double tolerance) {
+  if (axis < 0 || axis > 2) throw std::invalid_argument("solvePoreDiffusion: the axis must be 0, 1 or 2");
+  if (image.count() == 0 || image.pore.size() != image.count()) throw std::invalid_argument("solvePoreDiffusion: an empty image");
+  const Grid grid{image, axis, periodic};
+  PoreDiffusion result;
+  result.axis = axis;
+  result.porosity = image.porosity();
+  result.concentration.assign(image.count(), std::numeric_limits<double>::quiet_NaN());
+  const std::vector<std::uint8_t> fromInlet = reachedFrom(grid, Grid::inlet), fromOutlet = reachedFrom(grid, Grid::outlet);
+  std::vector<std::int64_t> unknown(image.count(), -1);
+  std::int64_t n = 0;
+  for (std::size_t v = 0; v < image.count(); ++v) {
+    result.percolates = result.percolates || (fromInlet[v] && fromOutlet[v]);
+    if (fromInlet[v] || fromOutlet[v]) unknown[v] = n++;
+  }
+  if (!result.percolates) {  // no path: D_eff = 0; the connected voxels take their reservoir's value
+    for (std::size_t v = 0; v < image.count(); ++v) {
+      if (unknown[v] >= 0) result.concentration[v] = fromInlet[v] ? 1.0 : 0.0;
+    }
+    result.tortuosityFactor = std::numeric_limits<double>::infinity();
+    return result;
+  }
+  // The finite-volume system A c = b over the connected pore voxels.
+  std::vector<Eigen::Triplet<double, std::int64_t>> entries;
+  entries.reserve(static_cast<std::size_t>(n) * 7);
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(n), guess(n);
+  for (std::size_t v = 0; v < image.count(); ++v) {
+    const std::int64_t u = unknown[v];
+    if (u < 0) continue;
+    const std::array<int, 3> c = grid.coordinates(v);
+    guess[u] = 1.0 - (c[axis] + 0.5) / image.size[axis];  // the open box's linear profile
+    double diagonal = 0.0;
+    for (int d = 0; d < 3; ++d) {
+      for (const int s : {-1, 1}) {
+        const std::int64_t w = grid.neighbour(c, d, s);
+        const double g = grid.conductance(d);
+        if (w == Grid::inlet || w == Grid::outlet) {
+          diagonal += 2.0 * g;  // half a voxel to the reservoir
+          if (w == Grid::inlet) b[u] += 2.0 * g;
+        } else if (w >= 0 && unknown[w] >= 0 && static_cast<std::size_t>(w) != v) {
+          diagonal += g;
+          entries.emplace_back(u, unknown[w], -g);
+        }
+      }
+    }
+    entries.emplace_back(u, u, diagonal);
+  }
+  Eigen::SparseMatrix<double, Eigen::RowMajor, std::int64_t> A(n, n);
+  A.setFromTriplets(entries.begin(), entries.end());
+  entries = {};
+  Eigen::ConjugateGradient<decltype(A), Eigen::Lower | Eigen::Upper> cg;
+  cg.setTolerance(tolerance);
+  cg.setMaxIterations(std::max<Eigen::Index>(1000, 20 * static_cast<Eigen::Index>(image.size[0] + image.size[1] + image.size[2])));
+  cg.compute(A);
+  const Eigen::VectorXd concentration = cg.solveWithGuess(b, guess);
+  result.iterations = static_cast<long>(cg.iterations());
+  // The fluxes out of the inlet and into the outlet reservoir.
+  double in = 0.0, out = 0.0;
+  for (std::size_t v = 0; v < image.count(); ++v) {
+    const std::int64_t u = unknown[v];
+    if (u < 0) continue;
+    result.concentration[v] = concentration[u];
+    const std::array<int, 3> c = grid.coordinates(v);
+    const double g = 2.0 * grid.conductance(axis);
+    if (grid.neighbour(c, axis, -1) == Grid::inlet) in += g * (1.0 - concentration[u]);
+    if (grid.neighbour(c, axis, +1) == Grid::outlet) out += g * concentration[u];
+  }
+  const Vec3 length = image.voxel.cwiseProduct(Vec3(image.size[0], image.size[1], image.size[2]));
+  const double area = length[(axis + 1) % 3] * length[(axis + 2) % 3];
+  result.diffusivityRatio = in * length[axis] / area;
+  result.tortuosityFactor = result.porosity / result.diffusivityRatio;
+  result.fluxImbalance = std::abs(in - out) / in;
+  return result;
+}
+
+}  // namespace sqdem
