@@ -1,14 +1,13 @@
 #include "sqdem/analysis/pore_diffusion.hpp"
 
-#include <Eigen/IterativeLinearSolvers>
-#include <Eigen/SparseCore>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <stdexcept>
+
+#include "sqdem/analysis/spd_solve.hpp"
 
 namespace sqdem {
 namespace {
@@ -95,10 +94,10 @@ PoreDiffusion solvePoreDiffusion(const VoxelImage& image, int axis, bool periodi
     result.tortuosityFactor = std::numeric_limits<double>::infinity();
     return result;
   }
-  // The finite-volume system A c = b over the connected pore voxels.
-  std::vector<Eigen::Triplet<double, std::int64_t>> entries;
-  entries.reserve(static_cast<std::size_t>(n) * 7);
-  Eigen::VectorXd b = Eigen::VectorXd::Zero(n), guess(n);
+  // The finite-volume system A c = b over the connected pore voxels, a row per voxel in order.
+  SpdRows A;
+  A.reserve(static_cast<std::size_t>(n), static_cast<std::size_t>(n) * 7);
+  std::vector<double> b(static_cast<std::size_t>(n), 0.0), guess(static_cast<std::size_t>(n));
   for (std::size_t v = 0; v < image.count(); ++v) {
     const std::int64_t u = unknown[v];
     if (u < 0) continue;
@@ -114,21 +113,17 @@ PoreDiffusion solvePoreDiffusion(const VoxelImage& image, int axis, bool periodi
           if (w == Grid::inlet) b[u] += 2.0 * g;
         } else if (w >= 0 && unknown[w] >= 0 && static_cast<std::size_t>(w) != v) {
           diagonal += g;
-          entries.emplace_back(u, unknown[w], -g);
+          A.add(unknown[w], -g);
         }
       }
     }
-    entries.emplace_back(u, u, diagonal);
+    A.add(u, diagonal);
+    A.endRow();
   }
-  Eigen::SparseMatrix<double, Eigen::RowMajor, std::int64_t> A(n, n);
-  A.setFromTriplets(entries.begin(), entries.end());
-  entries = {};
-  Eigen::ConjugateGradient<decltype(A), Eigen::Lower | Eigen::Upper> cg;
-  cg.setTolerance(tolerance);
-  cg.setMaxIterations(std::max<Eigen::Index>(1000, 20 * static_cast<Eigen::Index>(image.size[0] + image.size[1] + image.size[2])));
-  cg.compute(A);
-  const Eigen::VectorXd concentration = cg.solveWithGuess(b, guess);
-  result.iterations = static_cast<long>(cg.iterations());
+  const SpdSolution solution =
+      solveSpd(A, b, guess, tolerance, std::max<long>(1000, 20L * (image.size[0] + image.size[1] + image.size[2])));
+  const std::vector<double>& concentration = solution.x;
+  result.iterations = solution.iterations;
   // The fluxes out of the inlet and into the outlet reservoir.
   double in = 0.0, out = 0.0;
   for (std::size_t v = 0; v < image.count(); ++v) {

@@ -9,7 +9,8 @@ namespace sqdem::detail {
 namespace {
 
 Material readMaterial(const Reader& r, const YAML::Node& m, const std::string& where) {
-  r.allowOnly(m, where, {"youngs_modulus", "poisson_ratio", "density", "friction", "restitution", "yield_strength"});
+  r.allowOnly(m, where, {"youngs_modulus", "poisson_ratio", "density", "friction", "restitution", "yield_strength",
+                        "electronic_conductivity"});
   Material out;
   out.youngsModulus = r.positive(m, "youngs_modulus", where, "Pa");
   out.poissonRatio = r.number(m, "poisson_ratio", where);
@@ -34,7 +35,9 @@ void readMaterials(const Reader& r, const YAML::Node& root, Scene& scene) {
     const std::string name = m.first.as<std::string>();
     static const std::regex plain("[A-Za-z0-9_.-]+");  // names go into particle files (CSV) and messages
     if (!std::regex_match(name, plain)) r.fail(m.first, "materials." + name, "names are letters, digits, '_', '.', '-'");
-    scene.materials.push_back({name, readMaterial(r, m.second, "materials." + name)});
+    const std::string where = "materials." + name;
+    NamedMaterial& material = scene.materials.emplace_back(NamedMaterial{name, readMaterial(r, m.second, where), std::nullopt});
+    if (m.second["electronic_conductivity"]) material.electronicConductivity = r.positive(m.second, "electronic_conductivity", where, "S/m");
   }
 }
 

@@ -216,6 +216,7 @@ class ContactView {
   /// Particle slot of B (only for a particle pair).
   std::uint32_t b() const { return s_->b[k_]; }
   ContactKey key() const { return s_->key(k_); }
+  std::uint32_t slot() const { return k_; }  ///< in the store (Interactions::ellipses' index)
   bool onWall() const { return s_->onWall(k_); }
   std::uint32_t wall() const { return s_->b[k_] & ~wallFlag; }
   std::uint32_t feature() const { return s_->feature[k_]; }  ///< of a mesh wall

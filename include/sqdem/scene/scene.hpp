@@ -28,6 +28,9 @@ class SceneError : public std::runtime_error {
 struct NamedMaterial {
   std::string name;
   Material material;
+  /// (S/m) for the electrode analysis' electronic network (docs/electrode_analysis.md); the
+  /// engine does not read it.
+  std::optional<double> electronicConductivity;
 };
 
 /// A shape family: fixed semi-axes, or a distribution of volume-equivalent radius and the
