@@ -14,5 +14,6 @@ int stickingVelocity(const Arguments& args);
 int contactDriver(const Arguments& args);
 int runCommand(const Arguments& args);
 int plotCommand(const Arguments& args);
+int analyseCommand(const Arguments& args);
 
 }  // namespace sqdem::cli

@@ -39,6 +39,18 @@ constexpr Command commands[] = {
                          gnuplot; the script <log>_run.gp is kept for restyling.
 )",
      sqdem::cli::plotCommand},
+    {"analyse", R"(  analyse <scene.yaml> --particles FILE [--out DIR] [--region ZLO ZHI] [--voxels N]
+                         Electrode analysis of a particle file (a run's <name>_final_particles.csv)
+                         with the scene's materials, laws and walls (docs/electrode_analysis.md):
+                         porosity, coordination, specific surface, the pores' tortuosity factor
+                         along x, y, z at N and 2N voxels (default N 64 along the longest edge), the
+                         electronic conductivity of the contact network (material key
+                         electronic_conductivity, S/m); the box: x, y the domain's, z from ZLO to ZHI
+                         (m; default the floor, or the domain's bottom, to the bed's top). Prints one
+                         JSON object; writes analysis.json, pores.vti, network.vtp, profile.csv and
+                         profile.png to DIR (default <FILE's stem>_analysis beside FILE).
+)",
+     sqdem::cli::analyseCommand},
     {"validate", R"(  validate table1        Reproduce Table 1 of the review (Kildashti et al. 2023):
                          normalised elliptic Hertz force of two n = 6 superquadrics in three
                          poses, against the review's accurate model, FEM and simplified model.

@@ -4,6 +4,7 @@
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
 #include <vtkFloatArray.h>
+#include <vtkImageData.h>
 #include <vtkIntArray.h>
 #include <vtkMPIController.h>
 #include <vtkNew.h>
@@ -12,6 +13,8 @@
 #include <vtkPolyData.h>
 #include <vtkTypeInt32Array.h>
 #include <vtkTypeInt64Array.h>
+#include <vtkTypeUInt8Array.h>
+#include <vtkXMLImageDataWriter.h>
 #include <vtkXMLPPolyDataWriter.h>
 #include <vtkXMLPolyDataWriter.h>
 
@@ -32,6 +35,7 @@ template <> struct VtkArrayOf<double> { using type = vtkDoubleArray; };
 template <> struct VtkArrayOf<float> { using type = vtkFloatArray; };
 template <> struct VtkArrayOf<std::int64_t> { using type = vtkTypeInt64Array; };
 template <> struct VtkArrayOf<std::int32_t> { using type = vtkIntArray; };
+template <> struct VtkArrayOf<std::uint8_t> { using type = vtkTypeUInt8Array; };
 
 /// The array read in place (VTK's SetArray with save = 1: neither copied nor freed; a writer only
 /// reads it): a frame of 10^5 surfaces holds 10^7 values per array.
@@ -111,6 +115,22 @@ void writeVtp(const PolyData& data, const std::filesystem::path& file, VtkCompre
   writeFileAtomically(file, [&](const std::filesystem::path& temporary) {
     vtkNew<vtkXMLPolyDataWriter> writer;
     writer->SetInputData(toVtk(data));
+    encode(*writer, compression);
+    writer->SetFileName(temporary.string().c_str());
+    if (writer->Write() != 1) throw std::runtime_error("VTK could not write '" + file.string() + "'");
+  });
+}
+
+void writeVti(const ImageData& data, const std::filesystem::path& file, VtkCompression compression) {
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(data.cells[0] + 1, data.cells[1] + 1, data.cells[2] + 1);  // points
+  image->SetOrigin(data.origin.x(), data.origin.y(), data.origin.z());
+  image->SetSpacing(data.spacing.x(), data.spacing.y(), data.spacing.z());
+  for (const DataArray& a : data.cellData) image->GetCellData()->AddArray(toVtk(a));
+  if (!data.cellScalars.empty()) image->GetCellData()->SetActiveScalars(data.cellScalars.c_str());
+  writeFileAtomically(file, [&](const std::filesystem::path& temporary) {
+    vtkNew<vtkXMLImageDataWriter> writer;
+    writer->SetInputData(image);
     encode(*writer, compression);
     writer->SetFileName(temporary.string().c_str());
     if (writer->Write() != 1) throw std::runtime_error("VTK could not write '" + file.string() + "'");

@@ -17,7 +17,7 @@ namespace sqdem {
 struct DataArray {
   std::string name;
   int components = 1;
-  std::variant<std::vector<double>, std::vector<float>, std::vector<std::int64_t>, std::vector<std::int32_t>> values;
+  std::variant<std::vector<double>, std::vector<float>, std::vector<std::int64_t>, std::vector<std::int32_t>, std::vector<std::uint8_t>> values;
 
   /// Appends `times` tuples of Vec3 (components 3) or of one number (components 1), converted to
   /// the array's type.

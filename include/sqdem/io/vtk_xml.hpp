@@ -6,6 +6,7 @@
 
 #include <filesystem>
 
+#include "sqdem/io/image_data.hpp"
 #include "sqdem/io/poly_data.hpp"
 
 namespace sqdem {
@@ -20,6 +21,10 @@ enum class VtkCompression {
 
 /// Throws std::runtime_error naming the file.
 void writeVtp(const PolyData& data, const std::filesystem::path& file, VtkCompression compression);
+
+/// An ImageData as a VTK XML .vti file (vtkXMLImageDataWriter, the same encoding), atomically.
+/// Throws std::runtime_error naming the file.
+void writeVti(const ImageData& data, const std::filesystem::path& file, VtkCompression compression);
 
 /// Piece `piece` of `pieces` of a frame (a rank's share), written with the same encoding by VTK's
 /// parallel writer (vtkXMLPPolyDataWriter) as `<stem>_<piece>.vtp` beside `summary`, the .pvtp
