@@ -92,6 +92,7 @@ ConductorNetwork electronicNetwork(const World& world, std::span<const double> c
     link.branch = p.position[c.b()] - p.position[c.a()];
     const Vec3 offset = p.position[c.b()] - p.position[b];
     for (int d = 0; d < 3; ++d) link.shift[d] = static_cast<std::int8_t>(std::lround(offset[d] / period[d]));
+    if (link.shift[2] != 0) continue;  // across a periodic z: the electrodes cut the box there
     network.links.push_back(link);
   }
   return network;

@@ -118,6 +118,14 @@ void printSummary(const World& world, const RunReport& report, double wall, cons
     std::printf("compression curve: %s%s\n", (output.directory / (output.name + "_compression.csv")).string().c_str(),
                 files.compressionPlot() ? (", plot " + files.compressionPlot()->string()).c_str() : " (no plot: gnuplot not found)");
   }
+  for (const FileSink::AnalysisSummary& a : files.analyses()) {  // rank 0's
+    if (!a.error.empty()) {
+      std::printf("analysis after stage '%s' failed: %s\n", a.stage.c_str(), a.error.c_str());
+      continue;
+    }
+    std::printf("analysis after stage '%s': porosity %.4f, tortuosity factor tau_z %.3g, electronic conductivity "
+                "sigma_z / sigma %.3g: %s\n", a.stage.c_str(), a.porosity, a.tortuosityZ, a.conductivityRatioZ, a.json.string().c_str());
+  }
   if (ranks.rank() != 0) return;
   const std::optional<fs::path> plot = plotRun(files.log());
   std::printf("run plot: %s\n", plot ? plot->string().c_str() : "none (gnuplot not found)");

@@ -2,6 +2,7 @@
 
 #include "sqdem/io/run_log.hpp"
 #include "sqdem/io/vtk_writer.hpp"
+#include "sqdem/scene/electrode_analysis.hpp"
 #include "sqdem/scene/particle_file.hpp"
 
 namespace sqdem {
@@ -27,6 +28,23 @@ void FileSink::row(const World& world, long step, const std::string& stage) {
 
 void FileSink::checkpoint(const World& world, const RunProgress& progress, const std::string& ended) {
   writeRunCheckpoint(ended.empty() ? latestCheckpoint() : file("_after_" + ended + ".checkpoint"), scene_, progress, world);
+}
+
+void FileSink::stageEnded(const World& world, const StageSpec& stage) {
+  if (!stage.analysis) return;
+  const std::filesystem::path particles = file("_" + stage.name + "_particles.csv");
+  writeParticleFile(particles, world, scene_.materials);  // collective: gathered on rank 0
+  if (world.communicator().rank() != 0) return;
+  const std::filesystem::path directory = file("_" + stage.name + "_analysis");
+  try {
+    const AnalysedBed bed = analyseParticles(scene_, readParticleFile(particles, scene_.materials), world.walls(), *stage.analysis);
+    writeAnalysis(bed, scene_.path, particles.string(), directory);
+    const BedAnalysis& a = bed.analysis;
+    analyses_.push_back({stage.name, directory / "analysis.json", a.porosity, a.finePores[2].tortuosityFactor,
+                         a.conduction[2].conductivity / a.referenceConductivity, ""});
+  } catch (const std::exception& e) {
+    analyses_.push_back({stage.name, {}, 0.0, 0.0, 0.0, e.what()});
+  }
 }
 
 void FileSink::completed(const World& world) {

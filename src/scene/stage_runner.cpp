@@ -210,6 +210,7 @@ std::string StageRunner::stepStage(RunObserver& observer, const volatile std::si
 void StageRunner::endStage(const std::string& reason, RunObserver& observer) {
   const StageSpec& stage = scene_.stages[stage_];
   sink_.row(world_, report_.totalSteps, stage.name);
+  sink_.stageEnded(world_, stage);
   observer.stageEnded(stage, reason, world_);
   ++stage_;
   step_ = 0;

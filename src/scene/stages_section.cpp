@@ -15,7 +15,7 @@ void readStages(const Reader& r, const YAML::Node& root, Scene& scene) {
   for (std::size_t k = 0; k < stages.size(); ++k) {
     const std::string where = "stages[" + std::to_string(k) + "]";
     const YAML::Node st = stages[k];
-    r.allowOnly(st, where, {"name", "duration", "stop", "move_wall", "servo_wall", "viscous_damping", "form_bonds"});
+    r.allowOnly(st, where, {"name", "duration", "stop", "move_wall", "servo_wall", "viscous_damping", "form_bonds", "analyse"});
     StageSpec spec;
     spec.name = st["name"] ? r.text(st, "name", where) : "stage" + std::to_string(k);
     // Stage names go into CSV rows and file names.
@@ -34,6 +34,23 @@ void readStages(const Reader& r, const YAML::Node& root, Scene& scene) {
       if (!(*spec.bondGap >= 0.0)) r.fail(bonds["gap"], where + ".form_bonds.gap", "must be >= 0 (the largest gap over the smaller volume radius)");
       if (std::none_of(scene.interactions.begin(), scene.interactions.end(), [](const InteractionSpec& i) { return i.bond.has_value(); })) {
         r.fail(bonds, where + ".form_bonds", "no interaction has a bond: give one a 'bond' {normal_stiffness, ...}");
+      }
+    }
+    if (const YAML::Node analyse = st["analyse"]) {
+      // `analyse: true`, or {voxels, region: [z_low, z_high]}.
+      const std::string at = where + ".analyse";
+      if (analyse.IsMap()) {
+        r.allowOnly(analyse, at, {"voxels", "region"});
+        AnalysisSpec& a = spec.analysis.emplace();
+        a.voxels = static_cast<int>(r.integer(analyse, "voxels", at, 4, 1024, 64));
+        if (const YAML::Node region = analyse["region"]) {
+          if (!region.IsSequence() || region.size() != 2) r.fail(region, at + ".region", "must be [z_low, z_high] (m)");
+          a.zLow = r.asNumber(region[0], at + ".region");
+          a.zHigh = r.asNumber(region[1], at + ".region");
+          if (!(*a.zHigh > *a.zLow)) r.fail(region, at + ".region", "needs z_low < z_high (m)");
+        }
+      } else if (r.flag(st, "analyse", where, false)) {
+        spec.analysis.emplace();
       }
     }
     if (const YAML::Node stop = st["stop"]) {

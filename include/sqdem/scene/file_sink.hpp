@@ -35,6 +35,9 @@ class FileSink final : public RunSink {
   void frame(const World& world) override;
   void row(const World& world, long step, const std::string& stage) override;
   void checkpoint(const World& world, const RunProgress& progress, const std::string& ended) override;
+  /// A stage with `analyse`: its particles written (<name>_<stage>_particles.csv) and analysed on
+  /// rank 0 with the walls where they are, into <name>_<stage>_analysis/ (electrode_analysis.hpp).
+  void stageEnded(const World& world, const StageSpec& stage) override;
   void completed(const World& world) override;
   bool keepsCheckpoints() const override { return true; }
 
@@ -48,6 +51,15 @@ class FileSink final : public RunSink {
   const std::vector<CompressionSummary>& presses() const { return presses_; }
   const std::optional<CompactionFit>& compaction() const { return compaction_; }
   const std::optional<std::filesystem::path>& compressionPlot() const { return compressionPlot_; }
+  /// The stages' analyses so far (rank 0): where, and their headline numbers, or why it failed
+  /// (a failed analysis does not stop the run).
+  struct AnalysisSummary {
+    std::string stage;
+    std::filesystem::path json;
+    double porosity = 0.0, tortuosityZ = 0.0, conductivityRatioZ = 0.0;
+    std::string error;
+  };
+  const std::vector<AnalysisSummary>& analyses() const { return analyses_; }
 
  private:
   std::filesystem::path file(const std::string& suffix) const { return output_.directory / (output_.name + suffix); }
@@ -60,6 +72,7 @@ class FileSink final : public RunSink {
   std::vector<CompressionSummary> presses_;
   std::optional<CompactionFit> compaction_;
   std::optional<std::filesystem::path> compressionPlot_;
+  std::vector<AnalysisSummary> analyses_;
 };
 
 }  // namespace sqdem

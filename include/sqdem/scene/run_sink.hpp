@@ -21,6 +21,8 @@ class RunSink {
   /// A state to resume from: at the end of stage `ended`, or (ended empty) the latest, every
   /// output.checkpoint_every_* and when a run is stopped.
   virtual void checkpoint(const World& /*world*/, const RunProgress& /*progress*/, const std::string& /*ended*/) {}
+  /// A stage ended (after its last row), with the world as it left it.
+  virtual void stageEnded(const World& /*world*/, const StageSpec& /*stage*/) {}
   /// The run completed every stage: its final state.
   virtual void completed(const World& /*world*/) {}
   /// Whether checkpoints are kept at all (a sink without files: the runner skips the clock).

@@ -103,6 +103,12 @@ struct ParticleSpec {
   bool allowOverlap = false;      ///< may start overlapping other particles or walls
 };
 
+/// The electrode analysis of a bed (`stages[].analyse`, `sqdem analyse`; docs/electrode_analysis.md).
+struct AnalysisSpec {
+  std::optional<double> zLow, zHigh;  ///< the box's bottom and top (m); defaults: the floor, the bed's top
+  int voxels = 64;                    ///< along the box's longest edge (also at twice that)
+};
+
 struct StageSpec {
   std::string name;
   double duration = 0.0;            ///< simulated time limit (s)
@@ -123,6 +129,7 @@ struct StageSpec {
   WallPath wallPath;                ///< its position along its normal (when points are given)
   std::optional<std::size_t> servoWall;  ///< wall under force control in this stage
   WallServo servo;
+  std::optional<AnalysisSpec> analysis;  ///< analyse the bed at the stage's end (`analyse`)
 };
 
 struct OutputSpec {
