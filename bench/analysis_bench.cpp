@@ -4,7 +4,8 @@
 // diffusion on its voxel image. One case per process, so that the peak memory is the case's:
 //
 //   bench_analysis network N     N ~ particles (a cube of round(N^(1/3)) per edge)
-//   bench_analysis pores V       V voxels along the edge of the box of a 22^3 bed (one axis, z)
+//   bench_analysis pores V       V^3 voxels (near enough: the box is 44 x 44.8 x 44.4 mm) of a
+//                                22 x 28 x 37 bed, the diffusion along z
 //
 // prints the phases' wall times (s) and the process's peak resident memory (MiB). Numbers, not
 // asserted.
@@ -35,9 +36,10 @@ double peakMiB() {
   return static_cast<double>(usage.ru_maxrss) / 1024.0;  // KiB on Linux
 }
 
-World bed(int edge) {
+/// The lattice with `cells` particles along x, y, z.
+World bed(const Eigen::Vector3i& cells) {
   const Case& ellipsoids = denseBedCases()[0];
-  World world = denseBed(ellipsoids, Eigen::Vector3i(edge, edge, edge), 7, false);
+  World world = denseBed(ellipsoids, cells, 7, false);
   world.computeForces();
   return world;
 }
@@ -45,7 +47,7 @@ World bed(int edge) {
 int network(double particles) {
   const int edge = static_cast<int>(std::lround(std::cbrt(particles)));
   auto t = Clock::now();
-  const World world = bed(edge);
+  const World world = bed(Eigen::Vector3i(edge, edge, edge));
   const double build = since(t);
   t = Clock::now();
   const ConductorNetwork net = electronicNetwork(world, std::vector<double>{1.0}, world.domain().lo.z(), world.domain().hi.z());
@@ -62,7 +64,7 @@ int network(double particles) {
 }
 
 int pores(int voxels) {
-  const World world = bed(22);
+  const World world = bed(Eigen::Vector3i(22, 28, 37));  // a near cube: 44 x 44.8 x 44.4 mm
   const ParticleStore& p = world.particles();
   std::vector<PlacedShape> placed(p.size());
   for (std::size_t i = 0; i < p.size(); ++i) placed[i] = {&world.shapes()[p.shape[i]], p.position[i], p.orientation[i]};

@@ -4,14 +4,17 @@
 // conducts sigma = g / d), a network without a path conducts nothing and says so, and a contact
 // spot's resistance is Holm's elliptic constriction K(e) / (2 pi sigma a) (Holm 1967, Electric
 // Contacts, Secs. 4-5): 1 / (4 sigma a) for a circle, ln(4 a / b) / (2 pi sigma a) for a slender
-// ellipse. A lattice of Hertz spheres at overlap delta has a = (R delta / 2)^(1/2) (Hertz: a^2 =
+// ellipse; two ellipsoids conduct through the Hertz ellipse of their curvatures (below). A lattice of Hertz spheres at overlap delta has a = (R delta / 2)^(1/2) (Hertz: a^2 =
 // R* delta, R* = R / 2) and sigma_eff / sigma = 2 a / d.
 
 #include <gtest/gtest.h>
 
 #include <boost/math/special_functions/ellint_1.hpp>
+#include <boost/math/special_functions/ellint_2.hpp>
+#include <boost/math/tools/roots.hpp>
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <numbers>
 #include <sstream>
@@ -206,6 +209,47 @@ TEST(ElectronicNetwork, ALatticeOfHertzSpheresAgainstItsClosedForm) {
     const double expected = 2.0 * a / d * (axis < 2 ? 1.0 : N / (N - 1.0));
     EXPECT_NEAR(c.conductivity / sigma, expected, 1e-9 * expected) << "axis " << axis;
   }
+}
+
+// Two equal aligned ellipsoids (semi-axes A > B > C) touching pole to pole along z at overlap
+// delta, the lower cut by the low electrode, the upper by the high one: one contact of
+// conductance g = pi sigma a / K(e) (two sides of Holm's resistance), sigma_eff = g L / A_box.
+// The spot's aspect b / a is Hertz's for the relative curvatures A_h = C / A^2, B_h = C / B^2
+// (both bodies' pole curvatures), solved here from Johnson's relation (Contact Mechanics, 1985,
+// Eq. 4.39) B_h / A_h = ((a/b)^2 E(e) - K(e)) / (K(e) - E(e)), e^2 = 1 - (b/a)^2, with Boost's
+// integrals; its area the law's.
+TEST(ElectronicNetwork, TwoEllipsoidsConductThroughTheirEllipticSpot) {
+  const double A = 6e-6, B = 4e-6, C = 3e-6, delta = 2e-8, sigma = 0.03, side = 40e-6;
+  const double z1 = 3.5e-6, z2 = z1 + 2.0 * C - delta, zLow = 1e-6, zHigh = z2 + 1e-6;
+  std::ostringstream text;
+  text.precision(17);
+  text << "domain: {lo: [0, 0, 0], hi: [" << side << ", " << side << ", 20.0e-6], periodic: [x, y]}\n"
+       << "time_step: 1.0e-9\nmaterials:\n  nmc: {youngs_modulus: 1.0e9, poisson_ratio: 0.3, density: 4700, electronic_conductivity: " << sigma << "}\n"
+       << "shapes:\n  grain: {semi_axes: [" << A << ", " << B << ", " << C << "]}\ninteractions:\n  - materials: [nmc, nmc]\nparticles:\n"
+       << "  - {shape: grain, material: nmc, allow_overlap: true, centre: [20.0e-6, 20.0e-6, " << z1 << "]}\n"
+       << "  - {shape: grain, material: nmc, allow_overlap: true, centre: [20.0e-6, 20.0e-6, " << z2 << "]}\n"
+       << "stages:\n  - {name: hold, duration: 1.0e-9}\n";
+  World world = buildWorld(sceneFromText(text.str()));
+  world.computeForces();
+  ASSERT_EQ(world.contacts().size(), 1u);
+  const double area = (*world.contacts().begin()).normalLoad().area;
+  const double curvatureRatio = (C / (B * B)) / (C / (A * A));
+  const auto mismatch = [&](double k) {  // k = b / a
+    const double e = std::sqrt(1.0 - k * k), K = boost::math::ellint_1(e), E = boost::math::ellint_2(e);
+    return (E / (k * k) - K) / (K - E) - curvatureRatio;
+  };
+  std::uintmax_t iterations = 200;
+  const auto bracket = boost::math::tools::toms748_solve(mismatch, 0.05, 0.999, boost::math::tools::eps_tolerance<double>(50), iterations);
+  const double k = 0.5 * (bracket.first + bracket.second), a = std::sqrt(area / (std::numbers::pi * k));
+  const double g = std::numbers::pi * sigma * a / boost::math::ellint_1(std::sqrt(1.0 - k * k));
+  const ConductorNetwork net = electronicNetwork(world, std::vector<double>{sigma}, zLow, zHigh);
+  ASSERT_EQ(net.links.size(), 1u);
+  EXPECT_NEAR(net.links[0].conductance / g, 1.0, 1e-9);
+  const NetworkConduction z = solveConduction(net, 2);
+  EXPECT_NEAR(z.conductivity / (g * (zHigh - zLow) / (side * side)), 1.0, 1e-9);
+  EXPECT_FALSE(solveConduction(net, 0).percolates);
+  std::printf("b / a = %.6f, a = %.4g m, g = %.6g S (a circle of the same area: %.6g S)\n", k, a, g,
+              2.0 * sigma * std::sqrt(area / std::numbers::pi));
 }
 
 }  // namespace

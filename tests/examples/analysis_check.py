@@ -5,8 +5,8 @@ the analysis (CTest example_analysis_*; docs/electrode_analysis.md):
   analysis_check.py SQDEM SCENE PARTICLES OUTDIR VOXELS
 
 every number of the JSON object present and in its range (porosity and the ratios in (0, 1), a
-tortuosity factor >= 1 where the pores percolate, the network carrying current through the
-thickness), the files it names written, and the two orders agreeing: the voxel image does not
+tortuosity factor >= 1, the network's ratio in (0, 1) where it percolates and 0 where it does
+not), the files it names written, and the two orders agreeing: the voxel image does not
 depend on the order (bit for bit), the network's solution to the conjugate gradients' tolerance."""
 import json
 import math
@@ -46,8 +46,9 @@ for d in axes:
         failures.append(f'pores along {d}: tau {tau}, D_eff/D0 {ratio}')
     if len(a['voxel_convergence']['tortuosity_factor'][d]) != 2:
         failures.append(f'no convergence study along {d}')
-    if not 0.0 < a['electronic_conductivity_ratio'][d] < 1.0 or not a['network']['percolates'][d]:
-        failures.append(f"network along {d}: {a['electronic_conductivity_ratio'][d]}")
+    ratio, percolates = a['electronic_conductivity_ratio'][d], a['network']['percolates'][d]
+    if not (0.0 < ratio < 1.0 if percolates else ratio == 0.0 and a['network']['carrying_nodes'][d] == 0):
+        failures.append(f'network along {d}: ratio {ratio}, percolates {percolates}')
 for f in a['files']:
     if not os.path.getsize(f) > 0:
         failures.append(f'{f} empty')
