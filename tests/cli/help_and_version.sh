@@ -2,7 +2,7 @@
 # take the flag for a file or an unknown option), `sqdem --version` prints the project version.
 . "$(dirname "$0")/lib.sh"
 
-for command in run plot validate geometry sticking-velocity contact; do
+for command in run plot analyse validate geometry sticking-velocity contact; do
   for flag in --help -h; do
     expect_output "$command $flag" "^usage: sqdem" "$sqdem" "$command" "$flag"
     expect_output "$command $flag names the command" "^  $command " "$sqdem" "$command" "$flag"
@@ -18,6 +18,6 @@ version=$(sed -n 's/^project(sqdem VERSION \([0-9.]*\).*/\1/p' "$source_dir/CMak
 expect_output "--version" "^sqdem $version\$" "$sqdem" --version
 expect_output "version" "^sqdem $version\$" "$sqdem" version
 expect_output "help lists version" "version, --version" "$sqdem" help
-expect_error "unknown command lists the commands" 2 "allowed: run, plot, validate, geometry, sticking-velocity, contact, help, version" \
+expect_error "unknown command lists the commands" 2 "allowed: run, plot, analyse, validate, geometry, sticking-velocity, contact, help, version" \
   "$sqdem" frobnicate
 finish
