@@ -3,6 +3,7 @@
 // (scene/electrode_analysis.hpp; docs/electrode_analysis.md): one JSON object on stdout, and in
 // DIR its files.
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -28,8 +29,9 @@ struct AnalyseArguments {
   int voxels = 64;
 };
 
-/// The number in `text`, whole; nullopt otherwise.
+/// The decimal number that is the whole of `text` (no hexadecimal, infinity or NaN); nullopt otherwise.
 std::optional<double> numberIn(const std::string& text) {
+  if (text.empty() || text.find_first_not_of("0123456789+-.eE") != std::string::npos) return std::nullopt;
   std::size_t used = 0;
   try {
     const double x = std::stod(text, &used);
@@ -42,9 +44,14 @@ std::optional<double> numberIn(const std::string& text) {
 /// The arguments, or the message that refuses them.
 std::variant<AnalyseArguments, std::string> parse(const Arguments& args) {
   AnalyseArguments a;
+  std::vector<std::string> given;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& key = args[i];
     const auto values = [&](std::size_t n) { return i + n < args.size(); };
+    if (key.rfind("--", 0) == 0) {
+      if (std::find(given.begin(), given.end(), key) != given.end()) return "'" + key + "' is given twice";
+      given.push_back(key);
+    }
     if (key == "--particles" && values(1)) {
       a.particles = args[++i];
     } else if (key == "--out" && values(1)) {

@@ -87,6 +87,19 @@ check "runaway: log rows kept" test "$(wc -l < "$scratch/blowup/blowup.csv")" -g
 expect_error "JSON number overflow" 1 "a number out of range" sh -c "echo '{\"particles\": [1e400]}' | \"$sqdem\" geometry -"
 expect_error "directory as JSON" 1 "is a directory, not a JSON file" "$sqdem" geometry "$scratch"
 sv="--density 1350 --youngs-modulus 1.2e9 --poisson-ratio 0.33 --wall-youngs-modulus 166e9 --wall-poisson-ratio 0.28 --work-of-adhesion 0.24 --yield-pressure 30e6"
+# sqdem analyse: wrong arguments (exit 2) and wrong files (exit 1) are named, nothing is written.
+analysed="$source_dir/examples/nmc_calendering.yaml"
+bed="$source_dir/examples/nmc_packed_bed.csv"
+expect_error "analyse hex voxels" 2 "'--voxels' takes a whole number in \\[4, 1024\\], not '0x10'" \
+  "$sqdem" analyse "$analysed" --particles "$bed" --voxels 0x10 --out "$scratch/analysis_hex"
+expect_error "analyse repeated option" 2 "'--particles' is given twice" \
+  "$sqdem" analyse "$analysed" --particles "$bed" --particles "$bed" --out "$scratch/analysis_twice"
+expect_error "analyse missing particle file" 1 "missing_bed.csv" \
+  "$sqdem" analyse "$analysed" --particles "$scratch/missing_bed.csv" --out "$scratch/analysis_missing"
+sed 's/^nmc,/glass,/' "$bed" > "$scratch/glass_bed.csv"
+expect_error "analyse unknown material" 1 "glass_bed.csv:2: 'material'" \
+  "$sqdem" analyse "$analysed" --particles "$scratch/glass_bed.csv" --out "$scratch/analysis_glass"
+check "analyse wrote nothing on errors" test ! -e "$scratch/analysis_hex" -a ! -e "$scratch/analysis_twice" -a ! -e "$scratch/analysis_glass"
 expect_error "sticking-velocity radius 1e-300" 1 "option --radius = '1e-300': expected particle radius R \(m\), in \[1e-9, 1\]" \
   "$sqdem" sticking-velocity --radius 1e-300 $sv
 expect_error "sticking-velocity repeated option" 1 "option --radius is given twice" \
