@@ -4,8 +4,9 @@
 // conducts sigma = g / d), a network without a path conducts nothing and says so, and a contact
 // spot's resistance is Holm's elliptic constriction K(e) / (2 pi sigma a) (Holm 1967, Electric
 // Contacts, Secs. 4-5): 1 / (4 sigma a) for a circle, ln(4 a / b) / (2 pi sigma a) for a slender
-// ellipse; two ellipsoids conduct through the Hertz ellipse of their curvatures (below). A lattice of Hertz spheres at overlap delta has a = (R delta / 2)^(1/2) (Hertz: a^2 =
-// R* delta, R* = R / 2) and sigma_eff / sigma = 2 a / d.
+// ellipse; two ellipsoids conduct through the Hertz ellipse of their curvatures (below). A
+// lattice of Hertz spheres at overlap delta has a = (R delta / 2)^(1/2) (Hertz: a^2 = R* delta,
+// R* = R / 2) and sigma_eff / sigma = 2 a / d.
 
 #include <gtest/gtest.h>
 
@@ -23,6 +24,7 @@
 #include "sqdem/analysis/conductor_network.hpp"
 #include "sqdem/analysis/electronic_network.hpp"
 #include "sqdem/scene/build_world.hpp"
+#include "sqdem/scene/electrode_analysis.hpp"
 #include "sqdem/scene/scene_loader.hpp"
 
 namespace sqdem {
@@ -250,6 +252,44 @@ TEST(ElectronicNetwork, TwoEllipsoidsConductThroughTheirEllipticSpot) {
   EXPECT_FALSE(solveConduction(net, 0).percolates);
   std::printf("b / a = %.6f, a = %.4g m, g = %.6g S (a circle of the same area: %.6g S)\n", k, a, g,
               2.0 * sigma * std::sqrt(area / std::numbers::pi));
+}
+
+// A sphere (radius R) pressed onto the floor by overlap delta, its top cut by the high electrode:
+// the floor's contact is the low electrode, Holm's resistance on the sphere's side alone (the
+// steel floor conducts ideally: no electronic_conductivity), g = 4 sigma a with Hertz's
+// a = (R delta)^(1/2) for a sphere on a plane, and sigma_eff = g L / A_box. A second particle
+// material without a conductivity, when the first has one, is refused by name.
+TEST(ElectronicNetwork, TheFloorIsTheLowElectrodeThroughItsContacts) {
+  const double R = 3e-6, delta = 1e-8, sigma = 0.02, side = 20e-6, zHigh = R;
+  const std::string scene =
+      "domain: {lo: [0, 0, 0], hi: [2.0e-5, 2.0e-5, 2.0e-5], periodic: [x, y]}\ntime_step: 1.0e-9\nmaterials:\n"
+      "  nmc: {youngs_modulus: 1.0e9, poisson_ratio: 0.3, density: 4700, electronic_conductivity: 0.02}\n"
+      "  steel: {youngs_modulus: 2.0e11, poisson_ratio: 0.3, density: 7800}\n"
+      "shapes:\n  ball: {semi_axes: [3.0e-6, 3.0e-6, 3.0e-6]}\ninteractions:\n  - materials: [nmc, steel]\n  - materials: [nmc, nmc]\n"
+      "  - materials: [steel, steel]\nwalls:\n  - {point: [0, 0, 0], normal: [0, 0, 1], material: steel}\nparticles:\n"
+      "  - {shape: ball, material: nmc, allow_overlap: true, centre: [1.0e-5, 1.0e-5, 2.99e-6]}\n"
+      "stages:\n  - {name: hold, duration: 1.0e-9}\n";
+  const Scene parsed = sceneFromText(scene);
+  const std::vector<double> conductivity = electronicConductivities(parsed, parsed.particles);
+  EXPECT_EQ(conductivity[0], sigma);
+  EXPECT_TRUE(std::isinf(conductivity[1]));
+  World world = buildWorld(parsed);
+  world.computeForces();
+  const ConductorNetwork net = electronicNetwork(world, conductivity, 0.0, zHigh);
+  ASSERT_EQ(net.low[2].size(), 1u);
+  const double a = std::sqrt(R * delta), g = 4.0 * sigma * a;
+  EXPECT_NEAR(net.low[2][0].conductance / g, 1.0, 1e-9);
+  EXPECT_NEAR(solveConduction(net, 2).conductivity / (g * zHigh / (side * side)), 1.0, 1e-9);
+
+  Scene mixed = parsed;
+  mixed.particles.push_back(mixed.particles[0]);
+  mixed.particles.back().material = 1;  // steel particles: a particle material without a conductivity
+  try {
+    electronicConductivities(mixed, mixed.particles);
+    ADD_FAILURE() << "no error";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("'materials.steel.electronic_conductivity': missing (S/m)"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

@@ -18,12 +18,13 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-/// The pores along x, y and z of the image (the concentrations of x and y dropped: memory).
-std::array<PoreDiffusion, 3> poresOf(const VoxelImage& image, const Domain& domain) {
+/// The pores along x, y and z of the image, each axis' concentrations dropped (memory) but z's
+/// when `keepZ`.
+std::array<PoreDiffusion, 3> poresOf(const VoxelImage& image, const Domain& domain, bool keepZ) {
   std::array<PoreDiffusion, 3> out;
   for (int axis = 0; axis < 3; ++axis) {
     out[axis] = solvePoreDiffusion(image, axis, domain.periodic[0] && domain.periodic[1]);
-    if (axis < 2) out[axis].concentration = {};
+    if (axis < 2 || !keepZ) out[axis].concentration = {};
   }
   return out;
 }
@@ -55,24 +56,11 @@ BedAnalysis analyseBed(const World& world, const BedAnalysisOptions& options) {
   out.hi = Vec3(domain.hi.x(), domain.hi.y(), zHigh);
   const double boxVolume = (out.hi - out.lo).prod();
   const auto inBox = [&](std::size_t i) { return p.position[i].z() >= zLow && p.position[i].z() < zHigh; };
+  for (std::size_t i = 0; i < p.size(); ++i) out.particles += inBox(i) ? 1 : 0;
+  if (out.particles == 0) throw std::invalid_argument("no particle's centre lies in the box (--region, a stage's analyse.region)");
 
-  // Pores at N and 2 N voxels.
+  // The electronic network first (cheap, and it refuses a box too thin for its electrodes).
   auto start = std::chrono::steady_clock::now();
-  std::vector<PlacedShape> placed(p.size());
-  for (std::size_t i = 0; i < p.size(); ++i) placed[i] = {&world.shapes()[p.shape[i]], p.position[i], p.orientation[i]};
-  const std::array<bool, 3> periodic{domain.periodic[0], domain.periodic[1], false};
-  const VoxelImage image = voxelise(placed, out.lo, out.hi, periodic, options.voxels);
-  out.fineImage = voxelise(placed, out.lo, out.hi, periodic, 2 * options.voxels);
-  out.porosity = out.fineImage.porosity();
-  out.seconds.voxels = secondsSince(start);
-  start = std::chrono::steady_clock::now();
-  out.pores = poresOf(image, domain);
-  out.pores[2].concentration = {};
-  out.finePores = poresOf(out.fineImage, domain);
-  out.seconds.pores = secondsSince(start);
-
-  // The electronic network.
-  start = std::chrono::steady_clock::now();
   out.network = electronicNetwork(world, options.conductivity, zLow, zHigh);
   for (int axis = 0; axis < 3; ++axis) out.conduction[axis] = solveConduction(out.network, axis);
   std::vector<double> volumeOf(world.materials().size(), 0.0);
@@ -82,29 +70,46 @@ BedAnalysis analyseBed(const World& world, const BedAnalysisOptions& options) {
   out.referenceConductivity = options.conductivity[std::max_element(volumeOf.begin(), volumeOf.end()) - volumeOf.begin()];
   out.seconds.network = secondsSince(start);
 
+  // Pores at N and 2 N voxels.
+  start = std::chrono::steady_clock::now();
+  std::vector<PlacedShape> placed(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) placed[i] = {&world.shapes()[p.shape[i]], p.position[i], p.orientation[i]};
+  const std::array<bool, 3> periodic{domain.periodic[0], domain.periodic[1], false};
+  const VoxelImage image = voxelise(placed, out.lo, out.hi, periodic, options.voxels);
+  out.fineImage = voxelise(placed, out.lo, out.hi, periodic, 2 * options.voxels);
+  out.porosity = out.fineImage.porosity();
+  out.voxelEdge = {image.voxel.maxCoeff(), out.fineImage.voxel.maxCoeff()};
+  out.voxelsAlongLongest = {*std::max_element(image.size.begin(), image.size.end()),
+                            *std::max_element(out.fineImage.size.begin(), out.fineImage.size.end())};
+  out.seconds.voxels = secondsSince(start);
+  start = std::chrono::steady_clock::now();
+  out.pores = poresOf(image, domain, false);
+  out.finePores = poresOf(out.fineImage, domain, true);
+  out.seconds.pores = secondsSince(start);
+
   // Surface, coordination and the profiles: each particle where its centre lies.
   const double thickness = zHigh - zLow;
   double diameter = 0.0, surface = 0.0;
   const std::vector<int> contactsOf = coordinationNumbers(world);
+  std::vector<double> areaOf(world.shapes().size(), -1.0);  // per shape, when first needed
   long contacts = 0;
   for (std::size_t i = 0; i < p.size(); ++i) {
     if (!inBox(i)) continue;
-    ++out.particles;
     const Superquadric& shape = world.shapes()[p.shape[i]];
     diameter += 2.0 * shape.volumeEquivalentRadius();
-    surface += surfaceArea(shape);
+    double& area = areaOf[p.shape[i]];
+    if (area < 0.0) area = surfaceArea(shape);
+    surface += area;
     contacts += contactsOf[i];
   }
-  if (out.particles == 0) throw std::invalid_argument("analyseBed: no particle's centre lies in the box");
   out.coordination = static_cast<double>(contacts) / static_cast<double>(out.particles);
   // Each contact buries its spot's area pi a b on each side in the box (a wall's: the particle's side).
   const std::vector<ContactEllipse> spots = world.contactEllipses();
-  const std::vector<std::uint32_t>& owners = world.ghosts().localOwners();
   for (const ContactView c : world.contacts()) {
     const ContactEllipse& spot = spots[c.slot()];
     const double buried = std::numbers::pi * spot.major * spot.minor;
     surface -= inBox(c.a()) ? buried : 0.0;
-    if (!c.onWall()) surface -= inBox(c.b() < p.size() ? c.b() : owners[c.b() - p.size()]) ? buried : 0.0;
+    if (!c.onWall()) surface -= inBox(world.ownedSlot(c.b())) ? buried : 0.0;
   }
   out.specificSurface = surface / boxVolume;
 

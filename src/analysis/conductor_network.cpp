@@ -1,6 +1,5 @@
 #include "sqdem/analysis/conductor_network.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <span>
@@ -48,11 +47,13 @@ void check(const ConductorNetwork& network, int axis) {
   if (!(network.box.minCoeff() > 0.0)) throw std::invalid_argument("solveConduction: the box's edges must be > 0");
   for (const ConductorNetwork::Link& l : network.links) {
     if (l.a >= network.nodes || l.b >= network.nodes) throw std::invalid_argument("solveConduction: a link to a missing node");
+    if (!(l.conductance > 0.0 && std::isfinite(l.conductance))) throw std::invalid_argument("solveConduction: a link's conductance must be finite and > 0");
   }
   for (int d = 0; d < 3; ++d) {
     for (const auto* side : {&network.low[d], &network.high[d]}) {
       for (const ConductorNetwork::Terminal& t : *side) {
         if (t.node >= network.nodes) throw std::invalid_argument("solveConduction: a terminal of a missing node");
+        if (!(t.conductance > 0.0)) throw std::invalid_argument("solveConduction: a terminal's conductance must be > 0");
         if (network.periodic[d]) throw std::invalid_argument("solveConduction: a terminal on periodic axis " + std::to_string(d));
       }
     }
@@ -154,6 +155,7 @@ NetworkConduction solveConduction(const ConductorNetwork& network, int axis, dou
   }
   const SpdSolution solution = solveSpd(A, b, guess, tolerance, count + 1000);
   result.iterations = solution.iterations;
+  result.converged = solution.converged;
   for (std::uint32_t i = 0; i < n; ++i) {
     if (unknown[i] >= 0) result.potential[i] = solution.x[unknown[i]];
     else if (carries[cluster[i]]) result.potential[i] = held[i];

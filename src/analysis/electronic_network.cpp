@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "sqdem/mechanics/elliptic_integrals.hpp"
+#include "sqdem/world/packing_measures.hpp"
 
 namespace sqdem {
 
@@ -46,16 +47,11 @@ ConductorNetwork electronicNetwork(const World& world, std::span<const double> c
     for (int d = 0; d < 3; ++d) reach[i][d] = R.row(d).dot(shape.supportPoint(R.row(d).transpose()));
     inside[i] = p.position[i].z() >= zLow && p.position[i].z() < zHigh;
   }
-  const PlaneWall* floor = nullptr;
+  // The floor, when it lies at zLow.
+  const PlaneWall* floor = floorWall(world);
+  if (floor && std::abs(floor->plane.point.z() - zLow) > 1e-9 * (zHigh - zLow)) floor = nullptr;
   std::uint32_t floorIndex = 0;
-  for (std::uint32_t w = 0; w < world.walls().size(); ++w) {
-    const PlaneWall* plane = world.walls()[w].as<PlaneWall>();
-    if (plane && plane->facesUp() && std::abs(plane->plane.point.z() - zLow) <= 1e-9 * (zHigh - zLow)) {
-      floor = plane;
-      floorIndex = w;
-      break;
-    }
-  }
+  while (floor && world.walls()[floorIndex].as<PlaneWall>() != floor) ++floorIndex;
   // Cut electrodes: the box's faces along axes that are not periodic (z's low face: the floor's
   // contacts when it lies there).
   constexpr double ideal = std::numeric_limits<double>::infinity();
@@ -63,18 +59,22 @@ ConductorNetwork electronicNetwork(const World& world, std::span<const double> c
     if (!inside[i]) continue;
     for (int d = 0; d < 3; ++d) {
       if (network.periodic[d]) continue;
-      if (p.position[i][d] - reach[i][d] < lo[d] && !(d == 2 && floor)) network.low[d].push_back({p.id[i], ideal});
-      if (p.position[i][d] + reach[i][d] > hi[d]) network.high[d].push_back({p.id[i], ideal});
+      const bool low = p.position[i][d] - reach[i][d] < lo[d] && !(d == 2 && floor), high = p.position[i][d] + reach[i][d] > hi[d];
+      if (low && high) {
+        throw std::invalid_argument("particle " + std::to_string(p.id[i]) + " reaches through the whole box along " + "xyz"[d] +
+                                    " and would join both electrodes: the box must be thicker (--region, a stage's analyse.region)");
+      }
+      if (low) network.low[d].push_back({p.id[i], ideal});
+      if (high) network.high[d].push_back({p.id[i], ideal});
     }
   }
 
   const std::vector<ContactEllipse> ellipses = world.contactEllipses();
-  const std::vector<std::uint32_t>& owners = world.ghosts().localOwners();
   const Vec3 period = domain.length();
   for (const ContactView c : world.contacts()) {
     const std::uint32_t k = c.slot();
     const ContactEllipse& spot = ellipses[k];
-    if (!(spot.major > 0.0) || !inside[c.a()]) continue;
+    if (!(spot.minor > 0.0) || !inside[c.a()]) continue;  // a spot the detector no longer finds is zero
     const double resistanceA = spreadingResistance(spot.major, spot.minor, conductivity[p.material[c.a()]]);
     if (c.onWall()) {
       if (floor && c.wall() == floorIndex) {
@@ -83,7 +83,7 @@ ConductorNetwork electronicNetwork(const World& world, std::span<const double> c
       }
       continue;
     }
-    const std::uint32_t b = c.b() < p.size() ? c.b() : owners[c.b() - p.size()];
+    const std::uint32_t b = world.ownedSlot(c.b());
     if (!inside[b]) continue;
     ConductorNetwork::Link link;
     link.a = p.id[c.a()];

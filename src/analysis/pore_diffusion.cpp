@@ -124,6 +124,7 @@ PoreDiffusion solvePoreDiffusion(const VoxelImage& image, int axis, bool periodi
       solveSpd(A, b, guess, tolerance, std::max<long>(1000, 20L * (image.size[0] + image.size[1] + image.size[2])));
   const std::vector<double>& concentration = solution.x;
   result.iterations = solution.iterations;
+  result.converged = solution.converged;
   // The fluxes out of the inlet and into the outlet reservoir.
   double in = 0.0, out = 0.0;
   for (std::size_t v = 0; v < image.count(); ++v) {

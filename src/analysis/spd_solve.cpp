@@ -48,7 +48,7 @@ SpdSolution solveSpd(const SpdRows& A, const std::vector<double>& b, const std::
   cg.setMaxIterations(maxIterations);
   cg.compute(matrix);
   const Eigen::VectorXd x = cg.solveWithGuess(Eigen::Map<const Eigen::VectorXd>(b.data(), n), Eigen::Map<const Eigen::VectorXd>(guess.data(), n));
-  return {std::vector<double>(x.data(), x.data() + n), static_cast<long>(cg.iterations())};
+  return {std::vector<double>(x.data(), x.data() + n), static_cast<long>(cg.iterations()), cg.info() == Eigen::Success};
 }
 
 }  // namespace sqdem

@@ -18,7 +18,7 @@ double ellipsoidArea(Vec3 axes) {
   const double a = axes[0], b = axes[1], c = axes[2];
   if (a - c <= 1e-12 * a) return 4.0 * std::numbers::pi * a * a;
   const double phi = std::acos(c / a), s = std::sin(phi), cosine = c / a;
-  const double k = std::sqrt(a * a * (b * b - c * c) / (b * b * (a * a - c * c)));
+  const double k = std::min(1.0, std::sqrt(a * a * (b * b - c * c) / (b * b * (a * a - c * c))));  // 1 at a = b, by round-off above
   return 2.0 * std::numbers::pi * c * c +
          2.0 * std::numbers::pi * a * b / s * (boost::math::ellint_2(k, phi) * s * s + boost::math::ellint_1(k, phi) * cosine * cosine);
 }

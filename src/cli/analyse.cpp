@@ -63,7 +63,7 @@ std::variant<AnalyseArguments, std::string> parse(const Arguments& args) {
       i += 2;
     } else if (key == "--voxels" && values(1)) {
       const std::optional<double> n = numberIn(args[++i]);
-      if (!n || *n != std::floor(*n) || *n < 4 || *n > 1024) return "'--voxels' takes a whole number in [4, 1024], not '" + args[i] + "'";
+      if (!n || *n != std::floor(*n) || *n < 4 || *n > 256) return "'--voxels' takes a whole number in [4, 256], not '" + args[i] + "'";
       a.voxels = static_cast<int>(*n);
     } else if (a.scene.empty() && key.rfind("--", 0) != 0) {
       a.scene = key;

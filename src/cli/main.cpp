@@ -43,7 +43,7 @@ constexpr Command commands[] = {
                          Electrode analysis of a particle file (a run's <name>_final_particles.csv)
                          with the scene's materials, laws and walls (docs/electrode_analysis.md):
                          porosity, coordination, specific surface, the pores' tortuosity factor
-                         along x, y, z at N and 2N voxels (default N 64 along the longest edge), the
+                         along x, y, z at N and 2N voxels (N in [4, 256], default 64, along the longest edge), the
                          electronic conductivity of the contact network (material key
                          electronic_conductivity, S/m); the box: x, y the domain's, z from ZLO to ZHI
                          (m; default the floor, or the domain's bottom, to the bed's top). Prints one

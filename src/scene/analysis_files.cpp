@@ -1,7 +1,6 @@
 // writeAnalysis (electrode_analysis.hpp): an analysis' JSON object and files.
 
 #include <algorithm>
-#include <cmath>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -97,6 +96,7 @@ std::string writeAnalysis(const AnalysedBed& bed, const std::string& scenePath, 
                           const fs::path& directory) {
   const World& world = bed.world;
   const BedAnalysis& result = bed.analysis;
+  const auto converged = [](const auto& solve) { return solve.converged; };
   std::error_code error;
   fs::create_directories(directory, error);
   if (error || !fs::is_directory(directory)) throw std::runtime_error(directory.string() + ": cannot create the output directory");
@@ -108,8 +108,6 @@ std::string writeAnalysis(const AnalysedBed& bed, const std::string& scenePath, 
   for (const std::string& f : writeProfile(result, directory)) files.push_back(f);
   files.push_back((directory / "analysis.json").string());
   const bool conducts = bed.conductivitiesGiven;
-  const VoxelImage& fine = result.fineImage;
-  const int longest = std::max({fine.size[0], fine.size[1], fine.size[2]});
   json out = {
       {"scene", scenePath},
       {"particles_file", source},
@@ -122,8 +120,8 @@ std::string writeAnalysis(const AnalysedBed& bed, const std::string& scenePath, 
       {"tortuosity_factor", perAxis([&](int d) { return result.finePores[d].tortuosityFactor; })},
       {"effective_diffusivity_ratio", perAxis([&](int d) { return result.finePores[d].diffusivityRatio; })},
       {"voxel_convergence",
-       {{"voxels_along_longest_edge", {longest / 2, longest}},
-        {"voxel_edge_m", {2.0 * fine.voxel.maxCoeff(), fine.voxel.maxCoeff()}},
+       {{"voxels_along_longest_edge", result.voxelsAlongLongest},
+        {"voxel_edge_m", result.voxelEdge},
         {"porosity", {result.pores[0].porosity, result.finePores[0].porosity}},
         {"tortuosity_factor", perAxis([&](int d) { return json{result.pores[d].tortuosityFactor, result.finePores[d].tortuosityFactor}; })}}},
       {"electronic_conductivity_ratio", perAxis([&](int d) { return result.conduction[d].conductivity / result.referenceConductivity; })},
@@ -134,6 +132,8 @@ std::string writeAnalysis(const AnalysedBed& bed, const std::string& scenePath, 
         {"contacts", result.network.links.size()},
         {"percolates", perAxis([&](int d) { return result.conduction[d].percolates; })},
         {"carrying_nodes", perAxis([&](int d) { return result.conduction[d].carryingNodes; })}}},
+      {"solvers_converged", std::ranges::all_of(result.pores, converged) && std::ranges::all_of(result.finePores, converged) &&
+                                std::ranges::all_of(result.conduction, converged)},
       {"seconds", {{"voxels", result.seconds.voxels}, {"pores", result.seconds.pores}, {"network", result.seconds.network}}},
       {"files", files}};
   const std::string text = out.dump(2) + "\n";

@@ -17,16 +17,16 @@ bool givesConductivities(const Scene& scene) {
 std::vector<double> electronicConductivities(const Scene& scene, const std::vector<ParticleSpec>& particles) {
   std::vector<std::uint8_t> ofParticles(scene.materials.size(), 0);
   for (const ParticleSpec& p : particles) ofParticles[p.material] = 1;
-  std::vector<double> out(scene.materials.size(), 1.0);
-  if (!givesConductivities(scene)) return out;
+  const bool given = givesConductivities(scene);
+  std::vector<double> out(scene.materials.size(), std::numeric_limits<double>::infinity());  // walls' materials: ideal
   for (std::size_t m = 0; m < out.size(); ++m) {
     const NamedMaterial& material = scene.materials[m];
     if (material.electronicConductivity) {
       out[m] = *material.electronicConductivity;
-    } else if (ofParticles[m]) {
+    } else if (ofParticles[m] && given) {
       throw SceneError(scene.path + ": 'materials." + material.name + ".electronic_conductivity': missing (S/m), as other materials give one");
-    } else {
-      out[m] = std::numeric_limits<double>::infinity();
+    } else if (ofParticles[m]) {
+      out[m] = 1.0;  // none given: every particle alike, the ratios alone known
     }
   }
   return out;

@@ -32,10 +32,10 @@ void FileSink::checkpoint(const World& world, const RunProgress& progress, const
 
 void FileSink::stageEnded(const World& world, const StageSpec& stage) {
   if (!stage.analysis) return;
-  const std::filesystem::path particles = file("_" + stage.name + "_particles.csv");
-  writeParticleFile(particles, world, scene_.materials);  // collective: gathered on rank 0
+  const std::filesystem::path directory = file("_" + stage.name + "_analysis"), particles = directory / "particles.csv";
+  if (world.communicator().rank() == 0) std::filesystem::create_directories(directory);
+  writeParticleFile(particles, world, scene_.materials);  // collective: gathered on rank 0, which writes it
   if (world.communicator().rank() != 0) return;
-  const std::filesystem::path directory = file("_" + stage.name + "_analysis");
   try {
     const AnalysedBed bed = analyseParticles(scene_, readParticleFile(particles, scene_.materials), world.walls(), *stage.analysis);
     writeAnalysis(bed, scene_.path, particles.string(), directory);

@@ -42,15 +42,17 @@ void readStages(const Reader& r, const YAML::Node& root, Scene& scene) {
       if (analyse.IsMap()) {
         r.allowOnly(analyse, at, {"voxels", "region"});
         AnalysisSpec& a = spec.analysis.emplace();
-        a.voxels = static_cast<int>(r.integer(analyse, "voxels", at, 4, 1024, 64));
+        a.voxels = static_cast<int>(r.integer(analyse, "voxels", at, 4, 256, 64));
         if (const YAML::Node region = analyse["region"]) {
           if (!region.IsSequence() || region.size() != 2) r.fail(region, at + ".region", "must be [z_low, z_high] (m)");
           a.zLow = r.asNumber(region[0], at + ".region");
           a.zHigh = r.asNumber(region[1], at + ".region");
           if (!(*a.zHigh > *a.zLow)) r.fail(region, at + ".region", "needs z_low < z_high (m)");
         }
-      } else if (r.flag(st, "analyse", where, false)) {
-        spec.analysis.emplace();
+      } else {
+        bool on = false;
+        if (!YAML::convert<bool>::decode(analyse, on)) r.fail(analyse, at, "must be true, false or {voxels, region: [z_low, z_high]}");
+        if (on) spec.analysis.emplace();
       }
     }
     if (const YAML::Node stop = st["stop"]) {

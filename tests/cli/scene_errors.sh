@@ -90,7 +90,7 @@ sv="--density 1350 --youngs-modulus 1.2e9 --poisson-ratio 0.33 --wall-youngs-mod
 # sqdem analyse: wrong arguments (exit 2) and wrong files (exit 1) are named, nothing is written.
 analysed="$source_dir/examples/nmc_calendering.yaml"
 bed="$source_dir/examples/nmc_packed_bed.csv"
-expect_error "analyse hex voxels" 2 "'--voxels' takes a whole number in \\[4, 1024\\], not '0x10'" \
+expect_error "analyse hex voxels" 2 "'--voxels' takes a whole number in \\[4, 256\\], not '0x10'" \
   "$sqdem" analyse "$analysed" --particles "$bed" --voxels 0x10 --out "$scratch/analysis_hex"
 expect_error "analyse repeated option" 2 "'--particles' is given twice" \
   "$sqdem" analyse "$analysed" --particles "$bed" --particles "$bed" --out "$scratch/analysis_twice"

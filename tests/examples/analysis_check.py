@@ -40,9 +40,11 @@ if not 0.0 < a['porosity'] < 1.0 or abs(a['solid_fraction'] + a['porosity'] - 1.
     failures.append(f"porosity {a['porosity']}, solid fraction {a['solid_fraction']}")
 if not a['coordination'] > 0.0 or not a['specific_surface_area_m2_per_m3'] > 0.0:
     failures.append('no contacts or no surface')
+if not a['solvers_converged']:
+    failures.append('a conjugate-gradient solve did not converge')
 for d in axes:
     tau, ratio = a['tortuosity_factor'][d], a['effective_diffusivity_ratio'][d]
-    if not (tau >= 1.0 and 0.0 < ratio < a['porosity'] and math.isclose(tau, a['porosity'] / ratio, rel_tol=1e-12)):
+    if tau is None or not (tau >= 1.0 and 0.0 < ratio < a['porosity'] and math.isclose(tau, a['porosity'] / ratio, rel_tol=1e-12)):
         failures.append(f'pores along {d}: tau {tau}, D_eff/D0 {ratio}')
     if len(a['voxel_convergence']['tortuosity_factor'][d]) != 2:
         failures.append(f'no convergence study along {d}')
@@ -58,7 +60,7 @@ for key in exact:
         failures.append(f'{key} depends on the order: {a[key]} vs {b[key]}')
 for d in axes:
     for key, tol in (('tortuosity_factor', 1e-12), ('electronic_conductivity_ratio', 1e-7)):
-        if not math.isclose(a[key][d], b[key][d], rel_tol=tol):
+        if a[key][d] is None or b[key][d] is None or not math.isclose(a[key][d], b[key][d], rel_tol=tol):
             failures.append(f'{key}.{d} depends on the order: {a[key][d]} vs {b[key][d]}')
 if failures:
     sys.exit('analysis check failed:\n  ' + '\n  '.join(failures))

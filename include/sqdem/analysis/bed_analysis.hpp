@@ -38,7 +38,9 @@ struct BedAnalysis {
   double porosity = 0.0;            ///< of the fine image
   double coordination = 0.0;        ///< mean particle contacts per particle in the box
   double specificSurface = 0.0;     ///< solid surface per box volume (1/m = m^2/m^3)
-  std::array<PoreDiffusion, 3> pores, finePores;  ///< along x, y, z at N and 2 N (concentrations: z's only)
+  std::array<PoreDiffusion, 3> pores, finePores;  ///< along x, y, z at N and 2 N (concentrations: the fine z's only)
+  std::array<double, 2> voxelEdge{0.0, 0.0};      ///< (m) the longest voxel edge of the N and 2 N images
+  std::array<int, 2> voxelsAlongLongest{0, 0};    ///< of the N and 2 N images
   VoxelImage fineImage;
   ConductorNetwork network;
   std::array<NetworkConduction, 3> conduction;    ///< along x, y, z
@@ -54,8 +56,8 @@ struct BedAnalysis {
 double bedTop(const World& world, double bottom);
 
 /// The analysis of the world's state (one process; contacts from its last computation). Throws
-/// std::invalid_argument for a box that is empty or holds no particle, voxels < 4, or
-/// conductivities that do not fit (electronicNetwork).
+/// std::invalid_argument for a box that is empty or holds no particle's centre, voxels < 4, or
+/// what electronicNetwork refuses (conductivities that do not fit, a box too thin).
 BedAnalysis analyseBed(const World& world, const BedAnalysisOptions& options);
 
 }  // namespace sqdem

@@ -51,13 +51,15 @@ struct NetworkConduction {
   std::size_t carryingNodes = 0;       ///< the nodes of the clusters that carry current
   double currentImbalance = 0.0;       ///< |I_in - I_out| / I_in between electrodes, else 0
   long iterations = 0;                 ///< conjugate-gradient iterations
+  bool converged = true;               ///< to the tolerance, within the iteration limit
   std::vector<double> potential;       ///< per node (dV = 1); NaN for the nodes left out
   std::vector<double> current;         ///< per link, from a to b (A at dV = 1 V)
 };
 
 /// The network's conduction along `axis`, to the relative residual `tolerance`. Throws
-/// std::invalid_argument for an axis outside 0-2, a link to a missing node, a terminal of a
-/// periodic axis, a node joined ideally to both electrodes (a short circuit) or a box edge <= 0.
+/// std::invalid_argument for an axis outside 0-2, a link to a missing node or whose conductance is
+/// not finite and > 0, a terminal of a periodic axis or whose conductance is not > 0, a node joined
+/// ideally to both electrodes (a short circuit) or a box edge <= 0.
 NetworkConduction solveConduction(const ConductorNetwork& network, int axis, double tolerance = 1e-10);
 
 }  // namespace sqdem

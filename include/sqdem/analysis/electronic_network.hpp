@@ -11,8 +11,8 @@
 // (Holm, *Electric Contacts: Theory and Application*, Springer 1967, Secs. 4-5); a contact joins
 // its two sides in series, 1 / g = R_A + R_B. The particle's bulk beyond the constriction adds
 // nothing: the spreading resistance already runs to infinity in the half-space, and the finite
-// body changes it by O(a / R_vol) (Batchelor & O'Brien 1977, J. Fluid Mech. 83, 97-117, for
-// spheres), the approximation of the DEM conduction models (Vargas & McCarthy 2001, AIChE J. 47,
+// body changes it by O(a / R_vol) (Batchelor & O'Brien 1977, Proc. R. Soc. Lond. A 355, 313-333,
+// for spheres), the approximation of the DEM conduction models (Vargas & McCarthy 2001, AIChE J. 47,
 // 1052-1059: conductance 2 k a).
 //
 // Electrodes along z: the low one at zLow is the floor wall's contacts (their spots, the wall's
@@ -36,7 +36,8 @@ double spreadingResistance(double major, double minor, double conductivity);
 /// The world's network (one process: every particle owned) between electrodes at zLow < zHigh
 /// (m), x and y over the domain; conductivity (S/m) per material index, infinite for an ideal
 /// conductor (a metal wall). Throws std::invalid_argument for a conductivity that is not > 0, a
-/// particle material whose conductivity is infinite, or a world spread over several ranks.
+/// particle material whose conductivity is infinite, a world spread over several ranks, or a
+/// particle that reaches through the whole box along an axis with electrodes (a short circuit).
 ConductorNetwork electronicNetwork(const World& world, std::span<const double> conductivity, double zLow, double zHigh);
 
 }  // namespace sqdem

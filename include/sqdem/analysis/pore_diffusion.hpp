@@ -27,6 +27,7 @@ struct PoreDiffusion {
   double tortuosityFactor = 0.0;  ///< eps D0 / D_eff (infinite without a path)
   double fluxImbalance = 0.0;     ///< |J_in - J_out| / J_in: the solution's conservation
   long iterations = 0;            ///< conjugate-gradient iterations
+  bool converged = true;          ///< to the tolerance, within the iteration limit
   std::vector<double> concentration;  ///< per voxel, c_in = 1, c_out = 0; solid and unconnected voxels NaN
 };
 

@@ -33,6 +33,7 @@ class SpdRows {
 struct SpdSolution {
   std::vector<double> x;
   long iterations = 0;
+  bool converged = false;  ///< the tolerance reached within maxIterations
 };
 
 /// Solves A x = b from `guess` to the relative residual |r| / |b| <= tolerance, in at most

@@ -15,9 +15,9 @@
 namespace sqdem {
 
 /// Per material its conductivity (S/m): `electronic_conductivity`; when no material gives one, 1
-/// for every material (only the ratios are known); a wall's material without one conducts
-/// ideally (infinite). Throws SceneError naming the scene and the key for a particle material
-/// without one when another material gives one.
+/// for every particle material (only the ratios are known); a material of no particle (a wall's)
+/// without one conducts ideally (infinite). Throws SceneError naming the scene and the key for a
+/// particle material without one when another material gives one.
 std::vector<double> electronicConductivities(const Scene& scene, const std::vector<ParticleSpec>& particles);
 
 struct AnalysedBed {

@@ -35,8 +35,8 @@ class FileSink final : public RunSink {
   void frame(const World& world) override;
   void row(const World& world, long step, const std::string& stage) override;
   void checkpoint(const World& world, const RunProgress& progress, const std::string& ended) override;
-  /// A stage with `analyse`: its particles written (<name>_<stage>_particles.csv) and analysed on
-  /// rank 0 with the walls where they are, into <name>_<stage>_analysis/ (electrode_analysis.hpp).
+  /// A stage with `analyse`: its particles written (<name>_<stage>_analysis/particles.csv) and
+  /// analysed on rank 0 with the walls where they are, into that directory (electrode_analysis.hpp).
   void stageEnded(const World& world, const StageSpec& stage) override;
   void completed(const World& world) override;
   bool keepsCheckpoints() const override { return true; }

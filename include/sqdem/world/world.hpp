@@ -161,6 +161,11 @@ class World {
   ParticleStore& particles() { return particles_; }
   const ParticleStore& particles() const { return particles_; }
   const Ghosts& ghosts() const { return ghosts_; }
+  /// The owned slot that `slot` stands for: itself, or a ghost's owner in this process
+  /// (Ghosts::remote when another rank owns it).
+  std::uint32_t ownedSlot(std::uint32_t slot) const {
+    return slot < particles_.size() ? slot : ghosts_.localOwners()[slot - particles_.size()];
+  }
   const std::vector<Superquadric>& shapes() const { return shapes_; }
   const std::vector<Material>& materials() const { return materials_; }
   std::vector<Wall>& walls() { return walls_; }
