@@ -50,7 +50,7 @@ int network(double particles) {
   const World world = bed(Eigen::Vector3i(edge, edge, edge));
   const double build = since(t);
   t = Clock::now();
-  const ConductorNetwork net = electronicNetwork(world, std::vector<double>{1.0}, world.domain().lo.z(), world.domain().hi.z());
+  const ConductorNetwork net = electronicNetwork(world, world.contactEllipses(), std::vector<double>{1.0}, world.domain().lo.z(), world.domain().hi.z());
   const double assemble = since(t);
   std::printf("network: %zu particles, %zu contacts; bed built and its contacts computed %.2f s; network assembled %.3f s\n",
               net.nodes, net.links.size(), build, assemble);

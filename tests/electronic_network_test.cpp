@@ -203,7 +203,7 @@ TEST(ElectronicNetwork, ALatticeOfHertzSpheresAgainstItsClosedForm) {
   world.computeForces();
   // The box's faces cut the bottom and the top layer (R > d / 2): those are held at the
   // electrodes, N - 1 contacts in series between them (the lattice's closed form above).
-  const ConductorNetwork net = electronicNetwork(world, std::vector<double>{sigma}, 0.0, N * d);
+  const ConductorNetwork net = electronicNetwork(world, world.contactEllipses(), std::vector<double>{sigma}, 0.0, N * d);
   ASSERT_EQ(net.links.size(), 3u * N * N * N - N * N);
   const double a = std::sqrt(R * delta / 2.0);
   for (int axis = 0; axis < 3; ++axis) {
@@ -244,7 +244,7 @@ TEST(ElectronicNetwork, TwoEllipsoidsConductThroughTheirEllipticSpot) {
   const auto bracket = boost::math::tools::toms748_solve(mismatch, 0.05, 0.999, boost::math::tools::eps_tolerance<double>(50), iterations);
   const double k = 0.5 * (bracket.first + bracket.second), a = std::sqrt(area / (std::numbers::pi * k));
   const double g = std::numbers::pi * sigma * a / boost::math::ellint_1(std::sqrt(1.0 - k * k));
-  const ConductorNetwork net = electronicNetwork(world, std::vector<double>{sigma}, zLow, zHigh);
+  const ConductorNetwork net = electronicNetwork(world, world.contactEllipses(), std::vector<double>{sigma}, zLow, zHigh);
   ASSERT_EQ(net.links.size(), 1u);
   EXPECT_NEAR(net.links[0].conductance / g, 1.0, 1e-9);
   const NetworkConduction z = solveConduction(net, 2);
@@ -275,7 +275,7 @@ TEST(ElectronicNetwork, TheFloorIsTheLowElectrodeThroughItsContacts) {
   EXPECT_TRUE(std::isinf(conductivity[1]));
   World world = buildWorld(parsed);
   world.computeForces();
-  const ConductorNetwork net = electronicNetwork(world, conductivity, 0.0, zHigh);
+  const ConductorNetwork net = electronicNetwork(world, world.contactEllipses(), conductivity, 0.0, zHigh);
   ASSERT_EQ(net.low[2].size(), 1u);
   const double a = std::sqrt(R * delta), g = 4.0 * sigma * a;
   EXPECT_NEAR(net.low[2][0].conductance / g, 1.0, 1e-9);

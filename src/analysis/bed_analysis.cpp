@@ -61,7 +61,8 @@ BedAnalysis analyseBed(const World& world, const BedAnalysisOptions& options) {
 
   // The electronic network first (cheap, and it refuses a box too thin for its electrodes).
   auto start = std::chrono::steady_clock::now();
-  out.network = electronicNetwork(world, options.conductivity, zLow, zHigh);
+  const std::vector<ContactEllipse> spots = world.contactEllipses();  // the network's and the surface's
+  out.network = electronicNetwork(world, spots, options.conductivity, zLow, zHigh);
   for (int axis = 0; axis < 3; ++axis) out.conduction[axis] = solveConduction(out.network, axis);
   std::vector<double> volumeOf(world.materials().size(), 0.0);
   for (std::size_t i = 0; i < p.size(); ++i) {
@@ -104,7 +105,6 @@ BedAnalysis analyseBed(const World& world, const BedAnalysisOptions& options) {
   }
   out.coordination = static_cast<double>(contacts) / static_cast<double>(out.particles);
   // Each contact buries its spot's area pi a b on each side in the box (a wall's: the particle's side).
-  const std::vector<ContactEllipse> spots = world.contactEllipses();
   for (const ContactView c : world.contacts()) {
     const ContactEllipse& spot = spots[c.slot()];
     const double buried = std::numbers::pi * spot.major * spot.minor;

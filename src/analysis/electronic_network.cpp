@@ -17,7 +17,8 @@ double spreadingResistance(double major, double minor, double conductivity) {
   return K / (2.0 * std::numbers::pi * conductivity * major);
 }
 
-ConductorNetwork electronicNetwork(const World& world, std::span<const double> conductivity, double zLow, double zHigh) {
+ConductorNetwork electronicNetwork(const World& world, std::span<const ContactEllipse> spots, std::span<const double> conductivity,
+                                   double zLow, double zHigh) {
   const ParticleStore& p = world.particles();
   const Domain& domain = world.domain();
   if (world.communicator().size() != 1) throw std::invalid_argument("electronicNetwork: the world must be in one process");
@@ -69,11 +70,10 @@ ConductorNetwork electronicNetwork(const World& world, std::span<const double> c
     }
   }
 
-  const std::vector<ContactEllipse> ellipses = world.contactEllipses();
   const Vec3 period = domain.length();
   for (const ContactView c : world.contacts()) {
     const std::uint32_t k = c.slot();
-    const ContactEllipse& spot = ellipses[k];
+    const ContactEllipse& spot = spots[k];
     if (!(spot.minor > 0.0) || !inside[c.a()]) continue;  // a spot the detector no longer finds is zero
     const double resistanceA = spreadingResistance(spot.major, spot.minor, conductivity[p.material[c.a()]]);
     if (c.onWall()) {

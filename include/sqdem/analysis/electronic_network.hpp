@@ -34,10 +34,12 @@ namespace sqdem {
 double spreadingResistance(double major, double minor, double conductivity);
 
 /// The world's network (one process: every particle owned) between electrodes at zLow < zHigh
-/// (m), x and y over the domain; conductivity (S/m) per material index, infinite for an ideal
+/// (m), x and y over the domain; `spots` the world's contact ellipses (World::contactEllipses,
+/// by store slot); conductivity (S/m) per material index, infinite for an ideal
 /// conductor (a metal wall). Throws std::invalid_argument for a conductivity that is not > 0, a
 /// particle material whose conductivity is infinite, a world spread over several ranks, or a
 /// particle that reaches through the whole box along an axis with electrodes (a short circuit).
-ConductorNetwork electronicNetwork(const World& world, std::span<const double> conductivity, double zLow, double zHigh);
+ConductorNetwork electronicNetwork(const World& world, std::span<const ContactEllipse> spots, std::span<const double> conductivity,
+                                   double zLow, double zHigh);
 
 }  // namespace sqdem
