@@ -80,10 +80,13 @@ std::vector<std::string> writeProfile(const BedAnalysis& a, const fs::path& dir)
   for (const BedSlice& s : a.profile) csv << s.zLow << ',' << s.zHigh << ',' << s.porosity << ',' << s.coordination << ',' << s.particles << '\n';
   writeFileAtomically(dir / "profile.csv", csv.str());
   std::vector<std::string> files{(dir / "profile.csv").string()};
+  std::ostringstream bottom;  // all its digits: std::to_string keeps six decimals, a micrometre
+  bottom.precision(17);
+  bottom << a.lo.z();
   const std::string script = gnuplotPreamble("profile") +
       "set datafile separator ','\nset key top left\nset xlabel 'height above the box bottom (um)'\n"
       "set ylabel 'porosity'\nset y2label 'coordination'\nset ytics nomirror\nset y2tics\n"
-      "z0 = " + std::to_string(a.lo.z()) + "\n"
+      "z0 = " + bottom.str() + "\n"
       "plot 'profile.csv' skip 1 using ((($1 + $2) / 2 - z0) * 1e6):3 with linespoints title 'porosity', "
       "'' skip 1 using ((($1 + $2) / 2 - z0) * 1e6):4 axes x1y2 with linespoints title 'coordination'\n";
   if (const auto png = plotPng(dir, "profile", script)) files.push_back(png->string());
