@@ -6,8 +6,9 @@
 #include <cstdint>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
-#include "sqdem/analysis/spd_solve.hpp"
+#include "sqdem/analysis/voxel_operator.hpp"
 
 namespace sqdem {
 namespace {
@@ -79,63 +80,61 @@ PoreDiffusion solvePoreDiffusion(const VoxelImage& image, int axis, bool periodi
   PoreDiffusion result;
   result.axis = axis;
   result.porosity = image.porosity();
-  result.concentration.assign(image.count(), std::numeric_limits<double>::quiet_NaN());
   const std::vector<std::uint8_t> fromInlet = reachedFrom(grid, Grid::inlet), fromOutlet = reachedFrom(grid, Grid::outlet);
-  std::vector<std::int64_t> unknown(image.count(), -1);
-  std::int64_t n = 0;
+  std::vector<std::uint8_t> connected(image.count(), 0);
   for (std::size_t v = 0; v < image.count(); ++v) {
     result.percolates = result.percolates || (fromInlet[v] && fromOutlet[v]);
-    if (fromInlet[v] || fromOutlet[v]) unknown[v] = n++;
+    connected[v] = fromInlet[v] || fromOutlet[v];
   }
   if (!result.percolates) {  // no path: D_eff = 0; the connected voxels take their reservoir's value
+    result.concentration.assign(image.count(), std::numeric_limits<double>::quiet_NaN());
     for (std::size_t v = 0; v < image.count(); ++v) {
-      if (unknown[v] >= 0) result.concentration[v] = fromInlet[v] ? 1.0 : 0.0;
+      if (connected[v]) result.concentration[v] = fromInlet[v] ? 1.0 : 0.0;
     }
     result.tortuosityFactor = std::numeric_limits<double>::infinity();
     return result;
   }
-  // The finite-volume system A c = b over the connected pore voxels, a row per voxel in order.
-  SpdRows A;
-  A.reserve(static_cast<std::size_t>(n), static_cast<std::size_t>(n) * 7);
-  std::vector<double> b(static_cast<std::size_t>(n), 0.0), guess(static_cast<std::size_t>(n));
-  for (std::size_t v = 0; v < image.count(); ++v) {
-    const std::int64_t u = unknown[v];
-    if (u < 0) continue;
+  // The finite-volume system A c = b over the connected pore voxels.
+  VoxelOperator A(image.size);
+  std::vector<double> b(image.count(), 0.0), guess(image.count(), 0.0);
+  const auto voxels = static_cast<std::int64_t>(image.count());
+#pragma omp parallel for schedule(static)
+  for (std::int64_t v = 0; v < voxels; ++v) {  // each voxel writes its own row
+    if (!connected[v]) continue;
     const std::array<int, 3> c = grid.coordinates(v);
-    guess[u] = 1.0 - (c[axis] + 0.5) / image.size[axis];  // the open box's linear profile
-    double diagonal = 0.0;
+    guess[v] = 1.0 - (c[axis] + 0.5) / image.size[axis];  // the open box's linear profile
     for (int d = 0; d < 3; ++d) {
+      const double g = grid.conductance(d);
       for (const int s : {-1, 1}) {
         const std::int64_t w = grid.neighbour(c, d, s);
-        const double g = grid.conductance(d);
         if (w == Grid::inlet || w == Grid::outlet) {
-          diagonal += 2.0 * g;  // half a voxel to the reservoir
-          if (w == Grid::inlet) b[u] += 2.0 * g;
-        } else if (w >= 0 && unknown[w] >= 0 && static_cast<std::size_t>(w) != v) {
-          diagonal += g;
-          A.add(unknown[w], -g);
+          A.diagonal[v] += 2.0 * g;  // half a voxel to the reservoir
+          if (w == Grid::inlet) b[v] += 2.0 * g;
+        } else if (w >= 0 && connected[w] && w != v) {
+          A.diagonal[v] += g;
+          if (s == 1) A.face[d][v] += g;
         }
       }
     }
-    A.add(u, diagonal);
-    A.endRow();
   }
-  const SpdSolution solution =
-      solveSpd(A, b, guess, tolerance, std::max<long>(1000, 20L * (image.size[0] + image.size[1] + image.size[2])));
-  const std::vector<double>& concentration = solution.x;
+  SpdSolution solution =
+      solveVoxelOperator(A, b, std::move(guess), tolerance, std::max<long>(1000, 20L * (image.size[0] + image.size[1] + image.size[2])));
   result.iterations = solution.iterations;
   result.converged = solution.converged;
   // The fluxes out of the inlet and into the outlet reservoir.
   double in = 0.0, out = 0.0;
+  std::vector<double>& concentration = solution.x;
   for (std::size_t v = 0; v < image.count(); ++v) {
-    const std::int64_t u = unknown[v];
-    if (u < 0) continue;
-    result.concentration[v] = concentration[u];
+    if (!connected[v]) {
+      concentration[v] = std::numeric_limits<double>::quiet_NaN();
+      continue;
+    }
     const std::array<int, 3> c = grid.coordinates(v);
     const double g = 2.0 * grid.conductance(axis);
-    if (grid.neighbour(c, axis, -1) == Grid::inlet) in += g * (1.0 - concentration[u]);
-    if (grid.neighbour(c, axis, +1) == Grid::outlet) out += g * concentration[u];
+    if (grid.neighbour(c, axis, -1) == Grid::inlet) in += g * (1.0 - concentration[v]);
+    if (grid.neighbour(c, axis, +1) == Grid::outlet) out += g * concentration[v];
   }
+  result.concentration = std::move(concentration);
   const Vec3 length = image.voxel.cwiseProduct(Vec3(image.size[0], image.size[1], image.size[2]));
   const double area = length[(axis + 1) % 3] * length[(axis + 2) % 3];
   result.diffusivityRatio = in * length[axis] / area;

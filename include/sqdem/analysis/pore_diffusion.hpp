@@ -5,8 +5,9 @@
 // face, periodic along the other two axes (or closed: no flux). Finite volumes on the voxels:
 // between two face-neighbouring pore voxels the conductance D0 A / d (A the shared face, d the
 // distance of the centres), to a reservoir D0 A / (d / 2). The system of the unknown
-// concentrations is symmetric positive definite; Eigen's conjugate gradients solve it (diagonal
-// preconditioner). Pore voxels connected to no reservoir carry no flux and are left out.
+// concentrations is symmetric positive definite, a seven-point operator on the voxel grid
+// (voxel_operator.hpp: conjugate gradients with a multigrid preconditioner). Pore voxels connected
+// to no reservoir carry no flux and are left out.
 //
 // D_eff / D0 = J L / (A_box D0 (c_in - c_out)), J the flux out of the inlet reservoir, and the
 // tortuosity factor tau = eps D0 / D_eff (D_eff = D0 eps / tau, the definition of TauFactor,

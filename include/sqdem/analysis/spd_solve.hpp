@@ -1,8 +1,8 @@
 #pragma once
-// The symmetric positive-definite systems of the analysis' transport problems (pore diffusion,
-// the electronic network), assembled row by row in compressed form (no triplet list: 256^3 voxels
-// make ~10^8 entries) and solved by Eigen's conjugate gradients with its diagonal
-// preconditioner. Eigen's headers stay in spd_solve.cpp.
+// The symmetric positive-definite system of the electronic network (a conductance per contact),
+// assembled row by row in compressed form (no triplet list) and solved by Eigen's conjugate
+// gradients with its diagonal preconditioner. Eigen's headers stay in spd_solve.cpp. (The pore
+// voxels' seven-point systems have a solver of their own: voxel_operator.hpp.)
 
 #include <cstdint>
 #include <vector>
