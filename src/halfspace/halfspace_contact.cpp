@@ -1,0 +1,208 @@
+#include "sqdem/halfspace/halfspace_contact.hpp"
+
+#include <unsupported/Eigen/FFT>
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <numbers>
+#include <stdexcept>
+
+#include "sqdem/halfspace/love_influence.hpp"
+
+namespace sqdem {
+
+/// u = K * p on the grid: the linear convolution of the pressure with Love's kernel, by FFT on
+/// the grid padded to 2 nx x 2 ny (the kernel at offsets -(n - 1) ... n - 1 wrapped, the
+/// pressure zero outside the grid: no periodic images reach the grid's cells).
+struct HalfspaceSolver::Convolution {
+  using Complex = std::complex<double>;
+  int nx, ny, mx, my;  // the grid and the padded sizes
+  std::vector<Complex> kernel;  // its transform
+  mutable Eigen::FFT<double> fft;
+
+  Convolution(const GapGrid& grid, double effectiveModulus)
+      : nx(grid.nx), ny(grid.ny), mx(2 * grid.nx), my(2 * grid.ny), kernel(static_cast<std::size_t>(mx) * my) {
+    const double scale = 1.0 / (std::numbers::pi * effectiveModulus);
+    for (int dj = 1 - ny; dj < ny; ++dj) {
+      for (int di = 1 - nx; di < nx; ++di) {
+        kernel[wrap(di, dj)] = scale * loveRectangleDisplacement(di * grid.hx, dj * grid.hy, 0.5 * grid.hx, 0.5 * grid.hy);
+      }
+    }
+    transform(kernel, true);
+  }
+
+  std::size_t wrap(int di, int dj) const {
+    return static_cast<std::size_t>((di + mx) % mx) + static_cast<std::size_t>(mx) * static_cast<std::size_t>((dj + my) % my);
+  }
+
+  /// The 2-D transform of the padded array, forward or inverse (scaled), rows then columns.
+  void transform(std::vector<Complex>& a, bool forward) const {
+    std::vector<Complex> in, out;
+    const auto pass = [&](int count, int length, auto at) {
+      in.resize(length);
+      for (int line = 0; line < count; ++line) {
+        for (int k = 0; k < length; ++k) in[k] = a[at(line, k)];
+        if (forward) fft.fwd(out, in);
+        else fft.inv(out, in);
+        for (int k = 0; k < length; ++k) a[at(line, k)] = out[k];
+      }
+    };
+    pass(my, mx, [&](int j, int i) { return static_cast<std::size_t>(i) + static_cast<std::size_t>(mx) * j; });
+    pass(mx, my, [&](int i, int j) { return static_cast<std::size_t>(i) + static_cast<std::size_t>(mx) * j; });
+  }
+
+  std::vector<double> apply(const std::vector<double>& p) const {
+    std::vector<Complex> a(kernel.size(), 0.0);
+    for (int j = 0; j < ny; ++j) {
+      for (int i = 0; i < nx; ++i) a[static_cast<std::size_t>(i) + static_cast<std::size_t>(mx) * j] = p[i + static_cast<std::size_t>(nx) * j];
+    }
+    transform(a, true);
+    for (std::size_t k = 0; k < a.size(); ++k) a[k] *= kernel[k];
+    transform(a, false);
+    std::vector<double> u(p.size());
+    for (int j = 0; j < ny; ++j) {
+      for (int i = 0; i < nx; ++i) u[i + static_cast<std::size_t>(nx) * j] = a[static_cast<std::size_t>(i) + static_cast<std::size_t>(mx) * j].real();
+    }
+    return u;
+  }
+};
+
+HalfspaceSolver::HalfspaceSolver(const GapGrid& grid, double effectiveModulus) : grid_(grid), effectiveModulus_(effectiveModulus) {
+  if (grid.nx < 1 || grid.ny < 1 || !(grid.hx > 0.0) || !(grid.hy > 0.0) ||
+      grid.gap.size() != static_cast<std::size_t>(grid.nx) * grid.ny) {
+    throw std::invalid_argument("HalfspaceSolver: the grid needs nx, ny >= 1, cell edges > 0 and a gap per cell");
+  }
+  if (!(effectiveModulus > 0.0) || !std::isfinite(effectiveModulus)) {
+    throw std::invalid_argument("HalfspaceSolver: the effective modulus must be finite and > 0");
+  }
+  convolution_ = std::make_unique<Convolution>(grid, effectiveModulus);
+}
+
+HalfspaceSolver::~HalfspaceSolver() = default;
+
+std::vector<double> HalfspaceSolver::displacement(const std::vector<double>& pressure) const { return convolution_->apply(pressure); }
+
+HalfspaceContact HalfspaceSolver::atApproach(double approach, double tolerance, int maxIterations) const {
+  return solve(approach, 0.0, tolerance, maxIterations);
+}
+
+HalfspaceContact HalfspaceSolver::atLoad(double load, double tolerance, int maxIterations) const {
+  if (!(load > 0.0)) throw std::invalid_argument("HalfspaceSolver::atLoad: the load must be > 0");
+  return solve(0.0, load, tolerance, maxIterations);
+}
+
+HalfspaceContact HalfspaceSolver::solve(double approach, double load, double tolerance, int maxIterations) const {
+  const std::vector<double>& h = grid_.gap;
+  const std::size_t n = h.size();
+  const double cell = grid_.hx * grid_.hy;
+  const bool byLoad = load > 0.0;
+  HalfspaceContact result;
+  result.approach = approach;
+  std::vector<double>& p = result.pressure;
+  p.assign(n, 0.0);
+  // The start: a uniform pressure carrying the load (Polonsky & Keer), or at an approach a
+  // pressure growing with the interference, E* (delta - h) / L over the interfering cells (L the
+  // interfering region's size), started again four times softer should a step release every cell.
+  const auto interfering = std::count_if(h.begin(), h.end(), [&](double g) { return g < approach; });
+  double stiffness = effectiveModulus_ / std::sqrt(cell * static_cast<double>(std::max<long>(interfering, 1)));
+  const auto seed = [&] {
+    for (std::size_t k = 0; k < n; ++k) p[k] = byLoad ? load / (cell * static_cast<double>(n)) : stiffness * std::max(approach - h[k], 0.0);
+  };
+  if (!byLoad && interfering == 0) {
+    result.converged = true;
+    return result;
+  }
+  seed();
+  // Polonsky & Keer's Sec. 3 steps: the gap g on the contact cells (p > 0), the conjugate
+  // direction t over them, the step tau, cells with p < 0 released and cells with g < 0 at
+  // p = 0 taken in (the conjugacy restarted then), the load restored.
+  std::vector<double> g(n), t(n, 0.0), previous(n);
+  double gOld = 1.0;
+  bool conjugate = false;
+  const auto meanOverContact = [&](const std::vector<double>& v) {
+    double sum = 0.0;
+    long count = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+      if (p[k] > 0.0) sum += v[k], ++count;
+    }
+    return count > 0 ? sum / static_cast<double>(count) : 0.0;
+  };
+  for (result.iterations = 0; result.iterations < maxIterations;) {
+    ++result.iterations;
+    if (std::all_of(p.begin(), p.end(), [](double v) { return v == 0.0; })) {
+      stiffness *= 0.25;
+      seed();
+      conjugate = false;
+    }
+    const std::vector<double> u = convolution_->apply(p);
+    for (std::size_t k = 0; k < n; ++k) g[k] = u[k] + h[k] - approach;
+    if (byLoad) {
+      const double mean = meanOverContact(g);
+      for (double& v : g) v -= mean;
+    }
+    double G = 0.0;
+    for (std::size_t k = 0; k < n; ++k) {
+      if (p[k] > 0.0) G += g[k] * g[k];
+    }
+    for (std::size_t k = 0; k < n; ++k) t[k] = p[k] > 0.0 ? g[k] + (conjugate ? G / gOld : 0.0) * t[k] : 0.0;
+    gOld = G;
+    std::vector<double> r = convolution_->apply(t);
+    if (byLoad) {
+      const double mean = meanOverContact(r);
+      for (double& v : r) v -= mean;
+    }
+    double gt = 0.0, rt = 0.0;
+    for (std::size_t k = 0; k < n; ++k) {
+      if (p[k] > 0.0) gt += g[k] * t[k], rt += r[k] * t[k];
+    }
+    if (!(rt > 0.0)) {  // the gap already zero on the contact: nothing to do
+      result.converged = G == 0.0;
+      break;
+    }
+    const double tau = gt / rt;
+    previous = p;
+    for (std::size_t k = 0; k < n; ++k) {
+      if (previous[k] > 0.0) p[k] = std::max(previous[k] - tau * t[k], 0.0);
+    }
+    conjugate = true;
+    for (std::size_t k = 0; k < n; ++k) {
+      if (p[k] == 0.0 && g[k] < 0.0) {  // interpenetrating without pressure
+        p[k] = -tau * g[k];
+        conjugate = false;
+      }
+    }
+    double total = 0.0, change = 0.0;
+    for (const double v : p) total += v;
+    if (byLoad && total > 0.0) {
+      const double scale = load / (cell * total);
+      for (double& v : p) v *= scale;
+      total = load / cell;
+    }
+    for (std::size_t k = 0; k < n; ++k) change += std::abs(p[k] - previous[k]);
+    if (total > 0.0 && change <= tolerance * total) {
+      result.converged = true;
+      break;
+    }
+  }
+  double total = 0.0;
+  long contact = 0;
+  for (int j = 0; j < grid_.ny; ++j) {
+    for (int i = 0; i < grid_.nx; ++i) {
+      const double v = p[i + static_cast<std::size_t>(grid_.nx) * j];
+      if (v <= 0.0) continue;
+      total += v, ++contact;
+      result.reachesEdge = result.reachesEdge || i == 0 || j == 0 || i == grid_.nx - 1 || j == grid_.ny - 1;
+    }
+  }
+  result.force = cell * total;
+  result.area = cell * static_cast<double>(contact);
+  if (byLoad) {  // the approach: the mean of u + h over the contact, where the gap closes
+    const std::vector<double> u = convolution_->apply(p);
+    for (std::size_t k = 0; k < n; ++k) g[k] = u[k] + h[k];
+    result.approach = meanOverContact(g);
+  }
+  return result;
+}
+
+}  // namespace sqdem
