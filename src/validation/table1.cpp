@@ -56,6 +56,7 @@ Table1Result runTable1Case(const Table1Case& c, double overlapFraction) {
 
   Table1Result r;
   r.reference = c;
+  r.second = table1PoseOfSecond(c, distance);
   r.contact = contact;
   r.volumeEquivalentRadius = Rvol;
   const double cap = table1CapFactor * Rvol;

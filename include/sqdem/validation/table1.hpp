@@ -37,6 +37,7 @@ inline constexpr double table1CapFactor = 10.0;
 
 struct Table1Result {
   Table1Case reference;
+  Pose second;                          ///< particle II's pose (particle I at the origin, unrotated)
   ContactGeometry contact;
   double volumeEquivalentRadius = 0.0;  ///< R_vol of either particle (m)
   RelativeRadii radii;                  ///< capped at 10 R_vol
