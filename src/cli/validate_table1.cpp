@@ -5,8 +5,14 @@
 #include <numbers>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
+#include <stdexcept>
+#include <string>
+
 #include "commands.hpp"
 #include "sqdem/validation/table1.hpp"
+#include "sqdem/validation/table1_curve.hpp"
 
 namespace sqdem::cli {
 namespace {
@@ -15,12 +21,73 @@ constexpr double targetDeviation = 0.3;  // % from the review's accurate model (
 
 double percent(double value, double reference) { return 100.0 * (value - reference) / reference; }
 
+/// The curve of one case as a row, and the overlap where it crosses the FEM value (log-log
+/// interpolation between the bracketing points; 0 where it does not cross).
+void printCurveRow(const std::vector<Table1CurvePoint>& curve, int caseId) {
+  std::printf("%-5d", caseId);
+  const Table1CurvePoint* previous = nullptr;
+  double crossing = 0.0, fem = 0.0;
+  for (const Table1CurvePoint& p : curve) {
+    if (p.caseId != caseId) continue;
+    std::printf(" %8.4f", p.normalisedForce);
+    fem = p.fem;
+    if (previous && crossing == 0.0 && (previous->normalisedForce - fem) * (p.normalisedForce - fem) <= 0.0 &&
+        previous->normalisedForce != p.normalisedForce) {
+      const double s = std::log(fem / previous->normalisedForce) / std::log(p.normalisedForce / previous->normalisedForce);
+      crossing = previous->overlapOverRvol * std::pow(p.overlapOverRvol / previous->overlapOverRvol, s);
+    }
+    previous = &p;
+  }
+  std::printf("   %.4f   ", fem);
+  if (crossing > 0.0) std::printf("%.1e\n", crossing);
+  else std::printf("none in range\n");
+}
+
+void printCurves(const std::vector<Table1CurvePoint>& curve, const std::string& law) {
+  std::printf("\nThe normalised force against the overlap, law %s (docs/contact_laws.md, \"Blocky contacts\"):\n", law.c_str());
+  std::printf("%-5s", "case");
+  for (const double f : table1Overlaps) std::printf(" %8.0e", f);
+  std::printf("   %-8s %s\n", "FEM", "meets FEM at delta/R_vol");
+  for (const Table1Case& c : table1Cases) printCurveRow(curve, c.id);
+}
+
 }  // namespace
 
 int validateTable1(const Arguments& args) {
-  if (args.size() != 1 || args[0] != "table1") {
-    std::fprintf(stderr, "usage: sqdem validate table1\n");
+  const char* usage = "usage: sqdem validate table1 [--law review|elliptic_hertz|boundary_element] [--json]\n";
+  if (args.empty() || args[0] != "table1") {
+    std::fprintf(stderr, "%s", usage);
     return 2;
+  }
+  std::string law = "review";
+  bool json = false, lawGiven = false;
+  for (std::size_t k = 1; k < args.size(); ++k) {
+    if (args[k] == "--json" && !json) {
+      json = true;
+    } else if (args[k] == "--law" && !lawGiven && k + 1 < args.size()) {
+      law = args[++k];
+      lawGiven = true;
+    } else {
+      std::fprintf(stderr, "sqdem validate: unexpected or repeated argument '%s'\n%s", args[k].c_str(), usage);
+      return 2;
+    }
+  }
+  std::vector<Table1CurvePoint> curve;
+  try {
+    curve = table1Curve(law);
+  } catch (const std::invalid_argument& e) {
+    std::fprintf(stderr, "sqdem validate table1: --law: %s\n", e.what());
+    return 2;
+  }
+  if (json) {
+    nlohmann::ordered_json out;
+    out["law"] = law;
+    out["cases"] = nlohmann::ordered_json::array();
+    for (const Table1CurvePoint& p : curve) {
+      out["cases"].push_back({{"case", p.caseId}, {"overlap_over_rvol", p.overlapOverRvol}, {"normalised_force", p.normalisedForce}, {"fem", p.fem}});
+    }
+    std::printf("%s\n", out.dump(2).c_str());
+    return 0;
   }
   std::printf(
       "Table 1 of Kildashti, Dong & Yu (2023), seed 004: normalised normal force\n"
@@ -53,6 +120,7 @@ int validateTable1(const Arguments& args) {
                 r.radii.omega() * 180.0 / std::numbers::pi, r.radii.Rc / R, r.explicitFactors.gamma,
                 r.exactFactors.gamma, r.contact.iterations, r.normalisedForceExact);
   }
+  printCurves(curve, law);
   std::printf("\n%s: sqdem within %.1f %% of the review's accurate model in all cases\n",
               pass ? "PASS" : "FAIL", targetDeviation);
   return pass ? 0 : 1;

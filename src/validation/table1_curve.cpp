@@ -1,0 +1,42 @@
+#include "sqdem/validation/table1_curve.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "sqdem/validation/boundary_element_pair.hpp"
+#include "sqdem/validation/table1.hpp"
+
+namespace sqdem {
+
+std::vector<Table1CurvePoint> table1Curve(std::string_view law) {
+  if (std::find(table1CurveLaws.begin(), table1CurveLaws.end(), law) == table1CurveLaws.end()) {
+    std::string names;
+    for (const std::string_view name : table1CurveLaws) names += (names.empty() ? "" : ", ") + std::string(name);
+    throw std::invalid_argument("unknown law '" + std::string(law) + "' (allowed: " + names + ")");
+  }
+  const Superquadric shape = table1Shape();
+  const double Rvol = shape.volumeEquivalentRadius();
+  std::vector<Table1CurvePoint> curve;
+  for (const Table1Case& c : table1Cases) {
+    // The reference solver takes the touching pose's gap (an overlap of 1e-9 R_vol) and presses
+    // it by each overlap; the Hertz models read the curvatures at each overlap's pose.
+    const Table1Result touching = runTable1Case(c, 1e-9);
+    for (const double f : table1Overlaps) {
+      double force = 0.0;
+      if (law == "boundary_element") {
+        const double delta = f * Rvol;
+        const HalfspaceContact bem = boundaryElementContact({shape, Pose{}}, {shape, touching.second}, touching.contact, delta, 1.0);
+        force = bem.force / (4.0 / 3.0 * std::sqrt(Rvol) * std::pow(delta, 1.5));
+      } else {
+        const Table1Result r = runTable1Case(c, f);
+        force = law == "review" ? r.normalisedForce : r.normalisedForceExact;
+      }
+      curve.push_back({c.id, f, force, c.fem});
+    }
+  }
+  return curve;
+}
+
+}  // namespace sqdem
