@@ -51,10 +51,16 @@ constexpr Command commands[] = {
                          profile.png to DIR (default <FILE's stem>_analysis beside FILE).
 )",
      sqdem::cli::analyseCommand},
-    {"validate", R"(  validate table1        Reproduce Table 1 of the review (Kildashti et al. 2023):
+    {"validate", R"(  validate table1 [--law NAME] [--json]
+                         Reproduce Table 1 of the review (Kildashti et al. 2023):
                          normalised elliptic Hertz force of two n = 6 superquadrics in three
-                         poses, against the review's accurate model, FEM and simplified model.
-                         Exit code 1 if sqdem is more than 0.3 % from the accurate model.
+                         poses, against the review's accurate model, FEM and simplified model;
+                         then each case's normalised force at delta/R_vol = 1e-4 ... 3e-2 with
+                         the law NAME: review (default), elliptic_hertz or boundary_element (the
+                         half-space reference of the true gap, ~15 s). --json prints the curves
+                         only, as {"law", "cases": [{"case", "overlap_over_rvol",
+                         "normalised_force", "fem"}]}. Exit code 1 if sqdem is more than 0.3 %
+                         from the accurate model.
 )",
      sqdem::cli::validateTable1},
     {"geometry", R"(  geometry <file|->      Contact geometry probe: reads a JSON pair description (file, or - for
