@@ -31,17 +31,6 @@ std::array<PoreDiffusion, 3> poresOf(const VoxelImage& image, const Domain& doma
 
 }  // namespace
 
-double bedTop(const World& world, double bottom) {
-  const ParticleStore& p = world.particles();
-  double volume = 0.0, moment = 0.0;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const double v = world.shapes()[p.shape[i]].volume();
-    volume += v;
-    moment += v * (p.position[i].z() - bottom);
-  }
-  return bottom + 2.0 * moment / volume;
-}
-
 BedAnalysis analyseBed(const World& world, const BedAnalysisOptions& options) {
   const ParticleStore& p = world.particles();
   const Domain& domain = world.domain();
@@ -50,7 +39,7 @@ BedAnalysis analyseBed(const World& world, const BedAnalysisOptions& options) {
   BedAnalysis out;
   const PlaneWall* floor = floorWall(world);
   const double zLow = options.zLow.value_or(floor ? floor->plane.point.z() : domain.lo.z());
-  const double zHigh = options.zHigh.value_or(bedTop(world, zLow));
+  const double zHigh = options.zHigh.value_or(zLow + equivalentBedHeight(world, zLow));
   if (!(zHigh > zLow)) throw std::invalid_argument("analyseBed: the box's top must lie above its bottom");
   out.lo = Vec3(domain.lo.x(), domain.lo.y(), zLow);
   out.hi = Vec3(domain.hi.x(), domain.hi.y(), zHigh);

@@ -61,6 +61,20 @@ PlateMeasures measurePlate(const World& world, std::size_t plate) {
   return m;
 }
 
+double equivalentBedHeight(const World& world, double bottom) {
+  // A uniform bed of height H has its volume centroid at H/2.
+  const Communicator& ranks = world.communicator();
+  const ParticleStore& p = world.particles();
+  std::array<ExactSum, 2> sums;  // volumes, volume x height
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const double v = world.shapes()[p.shape[i]].volume();
+    sums[0].add(v);
+    sums[1].add(v * (p.position[i].z() - bottom));
+  }
+  ranks.sum(sums);
+  return 2.0 * sums[1].value() / sums[0].value();
+}
+
 PackingMeasures measurePacking(const World& world) {
   // Every sum exact and reduced over the ranks (communicator.hpp): the same bits at any
   // decomposition.
@@ -72,20 +86,18 @@ PackingMeasures measurePacking(const World& world) {
   const Domain& d = world.domain();
   const double bottom = d.lo.z();
   double top = bottom;
-  std::array<ExactSum, 3> sums;  // volume-equivalent radii, volumes, volume x height
+  std::array<ExactSum, 2> sums;  // volume-equivalent radii, volumes
   for (std::size_t i = 0; i < p.size(); ++i) {
     const Superquadric& s = world.shapes()[p.shape[i]];
     top = std::max(top, p.position[i].z() + s.boundingRadius());
     sums[0].add(s.volumeEquivalentRadius());
     sums[1].add(s.volume());
-    sums[2].add(s.volume() * (p.position[i].z() - bottom));
   }
   ranks.sum(sums);
   top = ranks.max(top);
   const double meanRadius = sums[0].value() / static_cast<double>(count), volumeTotal = sums[1].value();
   m.bedHeight = top - bottom;
-  // A uniform bed of height H has its volume centroid at H/2.
-  const double equivalentHeight = 2.0 * sums[2].value() / volumeTotal;
+  const double equivalentHeight = equivalentBedHeight(world, bottom);
   double lo = bottom + 2.0 * meanRadius, hi = bottom + equivalentHeight - 2.0 * meanRadius;
   if (hi - lo < 2.0 * meanRadius) lo = bottom, hi = top;
   ExactSum volume;

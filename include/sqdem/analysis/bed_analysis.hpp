@@ -18,7 +18,7 @@ namespace sqdem {
 
 struct BedAnalysisOptions {
   std::optional<double> zLow;   ///< (m); default: the floor wall, else the domain's bottom
-  std::optional<double> zHigh;  ///< (m); default: bedTop
+  std::optional<double> zHigh;  ///< (m); default: zLow + equivalentBedHeight (packing_measures.hpp)
   int voxels = 64;              ///< N along the box's longest edge (the fine image 2 N)
   /// Per material (S/m); infinite: an ideal conductor (a metal wall); one value per material.
   std::vector<double> conductivity;
@@ -50,10 +50,6 @@ struct BedAnalysis {
     double voxels = 0.0, pores = 0.0, network = 0.0;
   } seconds;
 };
-
-/// The top of a bed resting on z = bottom: bottom + 2 (its volume-weighted mean centre height
-/// above bottom), the height of the uniform layer with the same centroid (packing_measures.hpp).
-double bedTop(const World& world, double bottom);
 
 /// The analysis of the world's state (one process; contacts from its last computation). Throws
 /// std::invalid_argument for a box that is empty or holds no particle's centre, voxels < 4, or

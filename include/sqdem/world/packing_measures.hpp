@@ -55,6 +55,9 @@ PlateMeasures measurePlate(const World& world, std::size_t plate);
 const PlaneWall* floorWall(const World& world);
 /// The particles' volume (m^3).
 double solidVolume(const World& world);
+/// The height above z = bottom of the uniform layer with the bed's volume centroid,
+/// 2 sum V_i (z_i - bottom) / sum V_i (m): exact sums, reduced over the ranks.
+double equivalentBedHeight(const World& world, double bottom);
 
 /// Volume of a body between the planes z = lo and z = hi (m^3). Ellipsoids exactly: the
 /// cross-section normal to z is an ellipse of area (3V / 4h) (1 - t^2/h^2), t = z - z_c, with
