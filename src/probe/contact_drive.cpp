@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "sqdem/contact/detector.hpp"
+#include "sqdem/probe/boundary_element_law.hpp"
 #include "sqdem/io/plain_name.hpp"
 #include "sqdem/mechanics/mindlin_deresiewicz.hpp"
 
@@ -62,6 +63,9 @@ class CurveGeometry {
 
   const RelativeRadii& radii() const { return radii_; }
   double meanRadiusSum() const { return meanRadiusSum_; }  ///< r_IJ (m), 0 for prescribed radii
+  /// The two posed particles (none for prescribed radii) and the detector's contact at their poses.
+  const std::optional<std::array<Particle, 2>>& particles() const { return particles_; }
+  const ContactGeometry& start() const { return start_; }
   int detectorFailures() const { return failures_; }
 
   /// Overlap (m) when body B has approached by `approach` (m) from touching; the detector's
@@ -215,8 +219,8 @@ ContactDrive driveContact(const json& input, const std::string& defaultName) {
 
   struct Curve {
     std::string label;
-    CurveGeometry geometry;
-    std::unique_ptr<DrivenLaw> law;
+    std::unique_ptr<CurveGeometry> geometry;  // on the heap: the reference law refers to its particles
+    std::unique_ptr<CurveLaw> law;
   };
   std::vector<Curve> curves;
   for (std::size_t i = 0; i < input["curves"].size(); ++i) {
@@ -233,11 +237,18 @@ ContactDrive driveContact(const json& input, const std::string& defaultName) {
     }
     if (!c.contains("geometry")) throw InputError(where + ": missing key 'geometry'");
     if (!c.contains("law")) throw InputError(where + ": missing key 'law'");
-    CurveGeometry geometry(c["geometry"], where + ".geometry");
-    auto law = std::make_unique<DrivenLaw>(c["law"], where + ".law", geometry.radii(), materials, geometry.meanRadiusSum());
-    curves.push_back({label, std::move(geometry), std::move(law)});
+    curves.push_back({label, std::make_unique<CurveGeometry>(c["geometry"], where + ".geometry"), nullptr});
+    const json& law = c["law"];
+    const CurveGeometry& g = *curves.back().geometry;
+    if (law.is_object() && law.value("type", json()) == "boundary_element") {
+      if (!g.particles()) throw InputError(where + ".law: boundary_element needs the curve's geometry as 'particles' (two posed shapes)");
+      const auto& [A, B] = *g.particles();
+      curves.back().law = std::make_unique<BoundaryElementLaw>(law, where + ".law", A, B, g.start(), materials);
+    } else {
+      curves.back().law = std::make_unique<DrivenLaw>(law, where + ".law", g.radii(), materials, g.meanRadiusSum());
+    }
   }
-  const DisplacementPath path = readPath(input, curves.front().geometry.meanRadiusSum());
+  const DisplacementPath path = readPath(input, curves.front().geometry->meanRadiusSum());
 
   TangentialDrive tangentialTemplate;
   if (!path.tangential.empty()) {
@@ -246,6 +257,10 @@ ContactDrive driveContact(const json& input, const std::string& defaultName) {
     if (!(tangentialTemplate.friction > 0.0)) throw InputError("tangential: 'friction' must be > 0");
     tangentialTemplate.angle = number(t, "angle", "tangential", 0.0) * pi / 180.0;
     for (const Curve& c : curves) {
+      if (c.law->normalOnly()) {
+        throw InputError("tangential: the Mindlin-Deresiewicz drive needs a law of the registry; curve '" + c.label +
+                         "' is the boundary_element reference (normal only)");
+      }
       if (c.law->adhesive()) {
         throw InputError("tangential: the Mindlin-Deresiewicz drive needs a non-adhesive normal law (" +
                          lawNames([](const NormalLawEntry& e) { return e.curvatures && e.traits.adhesion != Adhesion::Always; }) +
@@ -269,11 +284,11 @@ ContactDrive driveContact(const json& input, const std::string& defaultName) {
   ContactDrive drive{name, title, path.normal, path.tangential, {}, normalised, tangentialPlot};
   for (Curve& c : curves) {
     TangentialDrive tangential = tangentialTemplate;
-    tangential.e2 = hertzFactors(c.geometry.radii().ratio(), EccentricityMethod::Exact).e2;
-    DrivenCurve out{.label = c.label, .radii = c.geometry.radii(), .meanRadiusSum = c.geometry.meanRadiusSum(),
+    tangential.e2 = hertzFactors(c.geometry->radii().ratio(), EccentricityMethod::Exact).e2;
+    DrivenCurve out{.label = c.label, .radii = c.geometry->radii(), .meanRadiusSum = c.geometry->meanRadiusSum(),
                     .constants = c.law->constants(), .yield = c.law->yield()};
     for (std::size_t k = 0; k < path.normal.size(); ++k) {
-      const double overlap = c.geometry.overlapAt(path.normal[k]);
+      const double overlap = c.geometry->overlapAt(path.normal[k]);
       const LawSample s = c.law->at(overlap);
       if (!std::isfinite(s.force)) throw std::runtime_error("curve '" + c.label + "': non-finite force at step " + std::to_string(k));
       out.overlap.push_back(overlap);
@@ -282,7 +297,7 @@ ContactDrive driveContact(const json& input, const std::string& defaultName) {
       out.regime.emplace_back(s.regime);
       if (!path.tangential.empty()) out.tangentialForce.push_back(tangential.force(path.tangential[k], s, materials));
     }
-    out.detectorFailures = c.geometry.detectorFailures();
+    out.detectorFailures = c.geometry->detectorFailures();
     drive.curves.push_back(std::move(out));
   }
   return drive;

@@ -27,7 +27,24 @@ struct ContactMaterials {
   double meanPoisson() const { return 0.5 * (poissonA + poissonB); }
 };
 
-class DrivenLaw {
+/// What the driver asks of a curve's law: a registered law (DrivenLaw) or the boundary-element
+/// reference (boundary_element_law.hpp).
+class CurveLaw {
+ public:
+  virtual ~CurveLaw() = default;
+  /// Next point of the history (overlap in m).
+  virtual LawSample at(double overlap) = 0;
+  /// The law's first yield (YieldingLaw): the reference point of normalised plots.
+  virtual std::optional<YieldPoint> yield() const { return std::nullopt; }
+  /// The law's constants at this contact, as a JSON object.
+  virtual json constants() const = 0;
+  /// Adhesive laws cannot drive the Mindlin-Deresiewicz tangential law.
+  virtual bool adhesive() const { return false; }
+  /// A normal-only law (the reference) cannot drive it either.
+  virtual bool normalOnly() const { return false; }
+};
+
+class DrivenLaw final : public CurveLaw {
  public:
   /// The law described by `law` ({"type": <registered name>, "eccentricity": exact | explicit |
   /// tabulated, the law's keys}); `meanRadiusSum` r_IJ (m) is needed only by the NMC fits of
@@ -35,14 +52,11 @@ class DrivenLaw {
   DrivenLaw(const json& law, const std::string& where, const RelativeRadii& radii, const ContactMaterials& materials,
             double meanRadiusSum);
 
-  /// Next point of the history (overlap in m).
-  LawSample at(double overlap);
-  /// The law's first yield (YieldingLaw): the reference point of normalised plots.
-  std::optional<YieldPoint> yield() const;
-  /// The law's constants at this contact (lawConstants), as a JSON object.
-  json constants() const;
-  /// Adhesive laws cannot drive the Mindlin-Deresiewicz tangential law.
-  bool adhesive() const { return adhesive_; }
+  LawSample at(double overlap) override;
+  std::optional<YieldPoint> yield() const override;
+  /// lawConstants of the law at this contact.
+  json constants() const override;
+  bool adhesive() const override { return adhesive_; }
 
  private:
   NormalLaw law_;
