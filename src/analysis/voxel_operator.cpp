@@ -186,7 +186,9 @@ class Multigrid {
                      [&](std::size_t C, const std::array<int, 3>&, std::size_t c) { next.b[C] += b[c] - level.r[c]; });
     cycle(l + 1, next.b, next.x);
     forEachBlockCell(level.A.size, level.merge, next.A.size,
-                     [&](std::size_t C, const std::array<int, 3>&, std::size_t c) { x[c] += overCorrection * next.x[C]; });
+                     [&](std::size_t C, const std::array<int, 3>&, std::size_t c) {
+                       if (level.A.diagonal[c] > 0.0) x[c] += overCorrection * next.x[C];  // no unknown stays 0
+                     });
     smooth(level, b, x, false);
   }
 

@@ -73,6 +73,9 @@ HalfspaceSolver::HalfspaceSolver(const GapGrid& grid, double effectiveModulus) :
       grid.gap.size() != static_cast<std::size_t>(grid.nx) * grid.ny) {
     throw std::invalid_argument("HalfspaceSolver: the grid needs nx, ny >= 1, cell edges > 0 and a gap per cell");
   }
+  if (std::any_of(grid.gap.begin(), grid.gap.end(), [](double h) { return std::isnan(h); })) {
+    throw std::invalid_argument("HalfspaceSolver: a gap is NaN (+infinity marks a cell that cannot touch)");
+  }
   if (!(effectiveModulus > 0.0) || !std::isfinite(effectiveModulus)) {
     throw std::invalid_argument("HalfspaceSolver: the effective modulus must be finite and > 0");
   }
@@ -107,7 +110,11 @@ HalfspaceContact HalfspaceSolver::solve(double approach, double load, double tol
   const auto interfering = std::count_if(h.begin(), h.end(), [&](double g) { return g < approach; });
   double stiffness = effectiveModulus_ / std::sqrt(cell * static_cast<double>(std::max<long>(interfering, 1)));
   const auto seed = [&] {
-    for (std::size_t k = 0; k < n; ++k) p[k] = byLoad ? load / (cell * static_cast<double>(n)) : stiffness * std::max(approach - h[k], 0.0);
+    const auto finite = std::count_if(h.begin(), h.end(), [](double g) { return std::isfinite(g); });
+    for (std::size_t k = 0; k < n; ++k) {
+      if (!std::isfinite(h[k])) p[k] = 0.0;
+      else p[k] = byLoad ? load / (cell * static_cast<double>(finite)) : stiffness * std::max(approach - h[k], 0.0);
+    }
   };
   if (!byLoad && interfering == 0) {
     result.converged = true;

@@ -43,7 +43,8 @@ GapGrid touchingGap(const PairBody& A, const PairBody& B, const ContactGeometry&
   const int scan = 33;
   double width = std::sqrt(2.0 * std::sqrt(A.shape.volumeEquivalentRadius() * B.shape.volumeEquivalentRadius()) * approach);
   std::array<double, 4> box{};  // x low, x high, y low, y high
-  for (int attempt = 0; attempt < 60; ++attempt) {
+  bool bracketed = false;
+  for (int attempt = 0; attempt < 60 && !bracketed; ++attempt) {
     const double step = 2.0 * width / (scan - 1);
     box = {width, -width, width, -width};
     for (int j = 0; j < scan; ++j) {
@@ -53,14 +54,19 @@ GapGrid touchingGap(const PairBody& A, const PairBody& B, const ContactGeometry&
         box = {std::min(box[0], x), std::max(box[1], x), std::min(box[2], y), std::max(box[3], y)};
       }
     }
+    if (box[0] > box[1]) {
+      throw std::runtime_error("touchingGap: no point of the tangent plane where the gap is below the approach " +
+                               std::to_string(approach) + " m (the detector's overlap " + std::to_string(contact.overlap) + " m)");
+    }
     const double extent = std::max({-box[0], box[1], -box[2], box[3]});
     if (extent >= width - 0.5 * step) width *= 2.0;
     else if (extent < 0.25 * width) width *= 0.5;
     else {
       box = {box[0] - step, box[1] + step, box[2] - step, box[3] + step};
-      break;
+      bracketed = true;
     }
   }
+  if (!bracketed) throw std::runtime_error("touchingGap: the region where the gap is below the approach is not bounded in 60 scans");
   GapGrid grid;
   grid.nx = grid.ny = cells;
   grid.x0 = box[0];
@@ -81,6 +87,7 @@ HalfspaceContact boundaryElementContact(const PairBody& A, const PairBody& B, co
   if (!result.converged) {
     throw std::runtime_error("boundaryElementContact: no convergence in " + std::to_string(result.iterations) + " iterations");
   }
+  if (result.reachesEdge) throw std::runtime_error("boundaryElementContact: the pressure reaches the grid's edge");
   return result;
 }
 

@@ -10,12 +10,15 @@
 
 namespace sqdem {
 
+void requireTable1CurveLaw(std::string_view law) {
+  if (std::find(table1CurveLaws.begin(), table1CurveLaws.end(), law) != table1CurveLaws.end()) return;
+  std::string names;
+  for (const std::string_view name : table1CurveLaws) names += (names.empty() ? "" : ", ") + std::string(name);
+  throw std::invalid_argument("unknown law '" + std::string(law) + "' (allowed: " + names + ")");
+}
+
 std::vector<Table1CurvePoint> table1Curve(std::string_view law) {
-  if (std::find(table1CurveLaws.begin(), table1CurveLaws.end(), law) == table1CurveLaws.end()) {
-    std::string names;
-    for (const std::string_view name : table1CurveLaws) names += (names.empty() ? "" : ", ") + std::string(name);
-    throw std::invalid_argument("unknown law '" + std::string(law) + "' (allowed: " + names + ")");
-  }
+  requireTable1CurveLaw(law);
   const Superquadric shape = table1Shape();
   const double Rvol = shape.volumeEquivalentRadius();
   std::vector<Table1CurvePoint> curve;

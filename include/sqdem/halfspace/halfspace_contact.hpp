@@ -41,7 +41,8 @@ struct HalfspaceContact {
 };
 
 /// Precomputes the influence of the grid's cells on each other (the FFT of Love's kernel) and
-/// solves contacts on it.
+/// solves contacts on it. Gaps of +infinity mark cells that cannot touch; NaN is refused. One
+/// solver serves one thread at a time (its FFT keeps plans).
 class HalfspaceSolver {
  public:
   /// effectiveModulus E* (Pa) of the pair; the grid is copied.

@@ -25,12 +25,13 @@ struct PairBody {
 };
 
 /// The touching gap on cells x cells covering the region where it is below `approach` (m), with
-/// a margin: the contact at that approach lies inside it (there u = delta - h > 0).
+/// a margin: the contact at that approach lies inside it (there u = delta - h > 0). Throws
+/// std::runtime_error when no point has a gap below the approach or the region is unbounded.
 GapGrid touchingGap(const PairBody& A, const PairBody& B, const ContactGeometry& contact, double approach, int cells);
 
 /// The half-space contact of the pair at the approach delta (m): force (N) and area (m^2) for
 /// the effective modulus E* (Pa), on cells x cells. Throws std::runtime_error when the solver
-/// does not converge.
+/// does not converge or the pressure reaches the grid's edge.
 HalfspaceContact boundaryElementContact(const PairBody& A, const PairBody& B, const ContactGeometry& contact, double approach,
                                         double effectiveModulus, int cells = 128);
 

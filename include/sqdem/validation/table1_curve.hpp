@@ -25,8 +25,9 @@ struct Table1CurvePoint {
   double fem;  ///< the review's finite-element value of the case (one overlap, not stated)
 };
 
-/// The curves of the three cases, case by case. Throws std::invalid_argument for a law not in
-/// table1CurveLaws, naming them.
+/// Throws std::invalid_argument naming table1CurveLaws unless `law` is one of them.
+void requireTable1CurveLaw(std::string_view law);
+/// The curves of the three cases, case by case (requireTable1CurveLaw first).
 std::vector<Table1CurvePoint> table1Curve(std::string_view law);
 
 }  // namespace sqdem
