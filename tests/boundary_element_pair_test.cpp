@@ -22,7 +22,7 @@ TEST(BoundaryElementPair, TwoEllipsoidsGiveEllipticHertz) {
   Pose poseA, poseB;
   poseA.orientation = Quat(Eigen::AngleAxisd(0.3, Vec3(1.0, 2.0, 0.5).normalized()));
   poseB.orientation = Quat(Eigen::AngleAxisd(1.1, Vec3(-0.4, 0.2, 1.0).normalized()));
-  const double Rvol = std::sqrt(A.volumeEquivalentRadius() * B.volumeEquivalentRadius()), delta = 1e-4 * Rvol;
+  const double Rvol = referenceVolumeRadius(A, B), delta = 1e-4 * Rvol;
   // B slid along a direction until the detector's overlap is delta.
   const Vec3 u = Vec3(0.3, -0.5, 0.8).normalized();
   DetectorSettings settings;

@@ -41,7 +41,7 @@ GapGrid touchingGap(const PairBody& A, const PairBody& B, const ContactGeometry&
   // box from a coarse scan of 33 x 33 points (one on the contact point) over a square widened
   // until the region lies inside it and narrowed while it fills less than a quarter of it.
   const int scan = 33;
-  double width = std::sqrt(2.0 * std::sqrt(A.shape.volumeEquivalentRadius() * B.shape.volumeEquivalentRadius()) * approach);
+  double width = std::sqrt(2.0 * referenceVolumeRadius(A.shape, B.shape) * approach);
   std::array<double, 4> box{};  // x low, x high, y low, y high
   bool bracketed = false;
   for (int attempt = 0; attempt < 60 && !bracketed; ++attempt) {
