@@ -1,4 +1,4 @@
-// The boundary-element reference of a superquadric pair (validation/boundary_element_pair.hpp):
+// The boundary-element reference of a superquadric pair (truegap/pair_contact.hpp):
 // the true gap of two ellipsoids is Hertz's quadratic form to O(delta / R), so at delta / R_vol
 // = 1e-4 their half-space contact is the elliptic Hertz force (004 Eqs. 1, 13; Johnson 1985,
 // Sec. 4.2(c)) to about 1e-4 and the grid's error. And the Table 1 pairs (n = 6 blocks, 004
@@ -11,7 +11,7 @@
 #include <cstdio>
 
 #include "sqdem/contact/detector.hpp"
-#include "sqdem/validation/boundary_element_pair.hpp"
+#include "sqdem/truegap/pair_contact.hpp"
 #include "sqdem/validation/table1.hpp"
 
 namespace sqdem {

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "sqdem/validation/boundary_element_pair.hpp"
+#include "sqdem/truegap/pair_contact.hpp"
 
 namespace sqdem::probe {
 

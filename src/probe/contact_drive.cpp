@@ -9,6 +9,7 @@
 
 #include "sqdem/contact/detector.hpp"
 #include "sqdem/probe/boundary_element_law.hpp"
+#include "sqdem/probe/true_gap_law.hpp"
 #include "sqdem/io/plain_name.hpp"
 #include "sqdem/mechanics/mindlin_deresiewicz.hpp"
 
@@ -240,10 +241,15 @@ ContactDrive driveContact(const json& input, const std::string& defaultName) {
     curves.push_back({label, std::make_unique<CurveGeometry>(c["geometry"], where + ".geometry"), nullptr});
     const json& law = c["law"];
     const CurveGeometry& g = *curves.back().geometry;
-    if (law.is_object() && law.value("type", json()) == "boundary_element") {
-      if (!g.particles()) throw InputError(where + ".law: boundary_element needs the curve's geometry as 'particles' (two posed shapes)");
+    const std::string type = law.is_object() && law.contains("type") && law["type"].is_string() ? law["type"].get<std::string>() : "";
+    if (type == "boundary_element" || type == "true_gap") {
+      if (!g.particles()) throw InputError(where + ".law: " + type + " needs the curve's geometry as 'particles' (two posed shapes)");
       const auto& [A, B] = *g.particles();
-      curves.back().law = std::make_unique<BoundaryElementLaw>(law, where + ".law", A, B, g.start(), materials);
+      if (type == "boundary_element") {
+        curves.back().law = std::make_unique<BoundaryElementLaw>(law, where + ".law", A, B, g.start(), materials);
+      } else {
+        curves.back().law = std::make_unique<TrueGapLaw>(law, where + ".law", A, B, g.start(), g.radii(), materials);
+      }
     } else {
       curves.back().law = std::make_unique<DrivenLaw>(law, where + ".law", g.radii(), materials, g.meanRadiusSum());
     }
@@ -259,7 +265,7 @@ ContactDrive driveContact(const json& input, const std::string& defaultName) {
     for (const Curve& c : curves) {
       if (c.law->normalOnly()) {
         throw InputError("tangential: the Mindlin-Deresiewicz drive needs a law of the registry; curve '" + c.label +
-                         "' is the boundary_element reference (normal only)");
+                         "' is a law of the true gap (boundary_element or true_gap: normal only)");
       }
       if (c.law->adhesive()) {
         throw InputError("tangential: the Mindlin-Deresiewicz drive needs a non-adhesive normal law (" +

@@ -5,7 +5,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "sqdem/validation/boundary_element_pair.hpp"
+#include "sqdem/truegap/pair_contact.hpp"
+#include "sqdem/truegap/true_gap_curve.hpp"
 #include "sqdem/validation/table1.hpp"
 
 namespace sqdem {
@@ -23,15 +24,18 @@ std::vector<Table1CurvePoint> table1Curve(std::string_view law) {
   const double Rvol = shape.volumeEquivalentRadius();
   std::vector<Table1CurvePoint> curve;
   for (const Table1Case& c : table1Cases) {
-    // The reference solver takes the touching pose's gap (an overlap of 1e-9 R_vol) and presses
+    // The laws of the true gap take the touching pose's gap (an overlap of 1e-9 R_vol) and press
     // it by each overlap; the Hertz models read the curvatures at each overlap's pose.
     const Table1Result touching = runTable1Case(c, 1e-9);
+    const PairBody A{shape, Pose{}}, B{shape, touching.second};
+    TrueGapCurve trueGap(PairGap(A, B, touching.contact), touching.radii, 1.0, trueGapWeight(shape, shape), 16);
     for (const double f : table1Overlaps) {
+      const double delta = f * Rvol, scale = 4.0 / 3.0 * std::sqrt(Rvol) * std::pow(delta, 1.5);
       double force = 0.0;
       if (law == "boundary_element") {
-        const double delta = f * Rvol;
-        const HalfspaceContact bem = boundaryElementContact({shape, Pose{}}, {shape, touching.second}, touching.contact, delta, 1.0);
-        force = bem.force / (4.0 / 3.0 * std::sqrt(Rvol) * std::pow(delta, 1.5));
+        force = boundaryElementContact(A, B, touching.contact, delta, 1.0).force / scale;
+      } else if (law == "true_gap") {
+        force = trueGap.at(delta).force / scale;
       } else {
         const Table1Result r = runTable1Case(c, f);
         force = law == "review" ? r.normalisedForce : r.normalisedForceExact;

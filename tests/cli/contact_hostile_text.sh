@@ -48,21 +48,27 @@ if command -v gnuplot >/dev/null; then
   check "and no ok.png.tmp" test ! -e "$weird/ok.png.tmp"
 fi
 
-# The boundary-element reference: posed particles only, cells an integer in [16, 512], no
-# tangential drive; each refused by one message naming the key, nothing written.
+# The laws of the true gap (the boundary-element reference, the true-gap law): posed particles
+# only, cells an integer in [16, 512] and [8, 64], no tangential drive; each refused by one
+# message naming the key, nothing written.
 reference='"material": {"youngs_modulus": 1e9, "poisson_ratio": 0.3}, "path": {"points": [0, 1e-8]}, "curves": [{"label": "c",'
-printf '{%s "geometry": {"radii": [1e-6, 1e-6]}, "law": {"type": "boundary_element"}}]}' "$reference" > "$scratch/reference.json"
-expect_error "boundary_element on radii" 1 "curves\[0\].law: boundary_element needs the curve's geometry as 'particles'" \
-  "$sqdem" contact "$scratch/reference.json" --out "$out"
 pair='{"particles": [{"centre": [0, 0, 0], "quaternion": [1, 0, 0, 0], "a": 1e-6, "b": 1e-6, "c": 1e-6, "n1": 2, "n2": 2},
   {"centre": [0, 0, 2.1e-6], "quaternion": [1, 0, 0, 0], "a": 1e-6, "b": 1e-6, "c": 1e-6, "n1": 2, "n2": 2}]}'
-for cells in 8 1000 64.5; do
-  printf '{%s "geometry": %s, "law": {"type": "boundary_element", "cells": %s}}]}' "$reference" "$pair" "$cells" > "$scratch/reference.json"
-  expect_error "boundary_element cells $cells" 1 "curves\[0\].law: 'cells' .per side of the grid. must be an integer in \[16, 512\]" \
+for law in "boundary_element 16 512 8 1000 64.5" "true_gap 8 64 4 100 16.5"; do
+  set -- $law
+  type=$1 low=$2 high=$3
+  printf '{%s "geometry": {"radii": [1e-6, 1e-6]}, "law": {"type": "%s"}}]}' "$reference" "$type" > "$scratch/reference.json"
+  expect_error "$type on radii" 1 "curves\[0\].law: $type needs the curve's geometry as 'particles'" \
+    "$sqdem" contact "$scratch/reference.json" --out "$out"
+  for cells in $4 $5 $6; do
+    printf '{%s "geometry": %s, "law": {"type": "%s", "cells": %s}}]}' "$reference" "$pair" "$type" "$cells" > "$scratch/reference.json"
+    expect_error "$type cells $cells" 1 "curves\[0\].law: 'cells' .per side of the .*grid. must be an integer in \[$low, $high\]" \
+      "$sqdem" contact "$scratch/reference.json" --out "$out"
+  done
+  printf '{%s "geometry": %s, "law": {"type": "%s"}}], "tangential": {"points": [0, 1e-9], "friction": 0.3}}' \
+    "$reference" "$pair" "$type" > "$scratch/reference.json"
+  expect_error "$type tangential" 1 "curve 'c' is a law of the true gap .boundary_element or true_gap: normal only." \
     "$sqdem" contact "$scratch/reference.json" --out "$out"
 done
-printf '{%s "geometry": %s, "law": {"type": "boundary_element"}}], "tangential": {"points": [0, 1e-9], "friction": 0.3}}' \
-  "$reference" "$pair" > "$scratch/reference.json"
-expect_error "boundary_element tangential" 1 "curve 'c' is the boundary_element reference .normal only." "$sqdem" contact "$scratch/reference.json" --out "$out"
 check "nothing written for the refused references" test ! -e "$out"
 finish

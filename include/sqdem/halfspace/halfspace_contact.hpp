@@ -8,8 +8,9 @@
 //
 // Boundary elements: a grid of nx x ny cells of edges hx, hy, the pressure uniform on each cell,
 // u at each cell's centre the sum over the cells of Love's rectangle solution
-// (love_influence.hpp), a discrete convolution evaluated by FFT on the grid padded to twice its
-// size (no wrap-around: Liu, Wang & Liu 2000, Wear 243, 101-111, "DC-FFT"). The complementarity
+// (love_influence.hpp), a discrete convolution: summed directly on grids of up to 32 x 32 cells,
+// by FFT on larger ones, padded to twice their size (no wrap-around: Liu, Wang & Liu 2000,
+// Wear 243, 101-111, "DC-FFT"). The complementarity
 // problem is solved by the conjugate gradients with an active set of Polonsky & Keer (1999,
 // Wear 231, 206-219): at a prescribed approach, or at a prescribed load (their algorithm, the
 // approach then the mean gap over the contact).
@@ -40,7 +41,7 @@ struct HalfspaceContact {
   bool reachesEdge = false;  ///< pressure on the grid's outermost cells: the grid is too small
 };
 
-/// Precomputes the influence of the grid's cells on each other (the FFT of Love's kernel) and
+/// Precomputes the influence of the grid's cells on each other (Love's kernel, or its FFT) and
 /// solves contacts on it. Gaps of +infinity mark cells that cannot touch; NaN is refused. One
 /// solver serves one thread at a time (its FFT keeps plans).
 class HalfspaceSolver {

@@ -2,7 +2,7 @@
 // The boundary-element reference as a curve of the single-contact driver (`sqdem contact`, law
 // type "boundary_element"; docs/contact_laws.md, "The boundary-element reference"): at each
 // step's overlap, the half-space contact of the two posed particles' true gap
-// (validation/boundary_element_pair.hpp) on `cells` x `cells` cells over the region the gap
+// (truegap/pair_contact.hpp) on `cells` x `cells` cells over the region the gap
 // interpenetrates at that overlap. Elastic, frictionless, normal only; slow (~0.5 s a step at
 // 128 x 128 cells).
 

@@ -5,8 +5,10 @@
 //   review            the review's accurate model (explicit e^2, Eq. 14; radii capped at 10 R_vol),
 //                     on the detector's curvatures at each overlap: Table 1's own model;
 //   elliptic_hertz    the engine's law: the same with the exact e^2 (Eq. 13);
-//   boundary_element  the half-space contact of the pair's true gap (boundary_element_pair.hpp,
-//                     128 x 128 cells): the reference.
+//   boundary_element  the half-space contact of the pair's true gap (truegap/pair_contact.hpp,
+//                     128 x 128 cells): the reference;
+//   true_gap          the true-gap law (truegap/true_gap_curve.hpp): the same on 16 x 16 cells at
+//                     the rungs of its ladder, power laws between them.
 // For a Hertzian pair the normalised force is a constant; for the blocky pairs it is not.
 
 #include <array>
@@ -16,7 +18,7 @@
 namespace sqdem {
 
 inline constexpr std::array<double, 6> table1Overlaps{1e-4, 3e-4, 1e-3, 3e-3, 1e-2, 3e-2};
-inline constexpr std::array<std::string_view, 3> table1CurveLaws{"review", "elliptic_hertz", "boundary_element"};
+inline constexpr std::array<std::string_view, 4> table1CurveLaws{"review", "elliptic_hertz", "boundary_element", "true_gap"};
 
 struct Table1CurvePoint {
   int caseId;

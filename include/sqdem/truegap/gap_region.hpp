@@ -1,0 +1,20 @@
+#pragma once
+// Where two bodies pressed together may touch: the region of the tangent plane where their true
+// gap (pair_gap.hpp) is below the approach, convex since the gap is. Found along 16 rays from
+// the contact, each crossing the level bracketed then bisected, the rays spread evenly over an
+// ellipse that is refined to the crossings' principal axes and aspect until both settle; thin
+// regions (an edge on a face: aspects of 1e-3) are followed as well as round ones
+// (docs/contact_laws.md, "The true gap").
+
+#include "sqdem/halfspace/halfspace_contact.hpp"
+#include "sqdem/truegap/pair_gap.hpp"
+
+namespace sqdem {
+
+/// The gap on cells x cells covering the region where it is below `level` (m), widened on each
+/// side by `margin` times its extent; the grid's x axis is the region's major axis. Throws
+/// std::runtime_error when the gap at the contact is not below the level or the region is
+/// unbounded.
+GapGrid gapRegionGrid(const PairGap& gap, double level, int cells, double margin);
+
+}  // namespace sqdem

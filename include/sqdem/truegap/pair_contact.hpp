@@ -1,0 +1,23 @@
+#pragma once
+// The half-space contact of a pair's true gap (docs/contact_laws.md, "The boundary-element
+// reference"): the gap (pair_gap.hpp) on a grid over the region where it is below the approach
+// (gap_region.hpp), pressed by that approach (halfspace/halfspace_contact.hpp). At 128 x 128
+// cells it is the reference of the blocky contact laws; at 16 x 16 the true-gap law's
+// (true_gap_curve.hpp).
+
+#include "sqdem/halfspace/halfspace_contact.hpp"
+#include "sqdem/truegap/pair_gap.hpp"
+
+namespace sqdem {
+
+/// The contact at the approach delta (m) for the effective modulus E* (Pa) on cells x cells: force
+/// (N) and area (m^2). The grid's margin grows (4 %, 20 %, 50 % of the region's extent) while the
+/// pressure reaches its edge. Throws std::runtime_error when the solver does not converge or the
+/// pressure reaches the widest grid's edge.
+HalfspaceContact gapContact(const PairGap& gap, double approach, double effectiveModulus, int cells);
+
+/// The same for two posed bodies and the detector's contact between them.
+HalfspaceContact boundaryElementContact(const PairBody& A, const PairBody& B, const ContactGeometry& contact, double approach,
+                                        double effectiveModulus, int cells = 128);
+
+}  // namespace sqdem

@@ -1,0 +1,49 @@
+#pragma once
+// The true gap of two posed superquadrics (docs/contact_laws.md, "The true gap"): the distance
+// between their undeformed surfaces over the common tangent plane at the detector's contact, at
+// the pose where they just touch.
+//
+// The plane: through the midpoint of the two contact points, normal n (A towards B), its axes
+// t1 along the contact ellipse's major axis (mechanics/elliptic.hpp) and t2 = n x t1. Above the
+// plane point q, the gap is the distance along n from A's top to B's bottom
+// (contact/surface_along_line.hpp), plus the detector's overlap: B moved back along n until the
+// bodies just touch (a translation along n shifts the gap uniformly). The gap is convex on the
+// plane (each body's height over it is concave), 0 at the contact and +infinity where a line
+// misses a body. Half-space theory takes both surfaces as flat on the contact's scale: the
+// small-slope approximation of every Hertz-type law.
+
+#include "sqdem/contact/contact_geometry.hpp"
+#include "sqdem/geometry/pose.hpp"
+#include "sqdem/geometry/superquadric.hpp"
+
+namespace sqdem {
+
+struct PairBody {
+  const Superquadric& shape;
+  Pose pose;
+};
+
+class PairGap {
+ public:
+  /// The bodies are kept by reference to their shapes; throws std::invalid_argument when the
+  /// detector's contact did not converge.
+  PairGap(const PairBody& A, const PairBody& B, const ContactGeometry& contact);
+
+  /// The gap (m) above the plane point origin + x t1 + y t2 (x, y in m).
+  double operator()(double x, double y) const;
+  /// sqrt(R_vol,A R_vol,B) (m): the pair's length scale.
+  double referenceLength() const { return referenceLength_; }
+  /// sqrt(R_minor / R_major) of the gap's quadratic form at the contact (relative radii capped
+  /// at 10 R_vol,ref): the aspect of the region where the gap is small, were it Hertz's.
+  double quadraticAspect() const { return quadraticAspect_; }
+  /// The larger relative radius (m), capped as above: the quadratic region along t1 is
+  /// sqrt(2 R delta) long.
+  double majorRadius() const { return majorRadius_; }
+
+ private:
+  PairBody A_, B_;
+  Vec3 origin_, normal_, t1_, t2_;
+  double overlap_, referenceLength_, quadraticAspect_, majorRadius_;
+};
+
+}  // namespace sqdem

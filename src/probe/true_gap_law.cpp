@@ -1,0 +1,32 @@
+#include "sqdem/probe/true_gap_law.hpp"
+
+#include <cmath>
+
+#include "sqdem/truegap/true_gap_curve.hpp"
+
+namespace sqdem::probe {
+
+TrueGapLaw::TrueGapLaw(const json& law, const std::string& where, const Particle& A, const Particle& B, const ContactGeometry& contact,
+                       const RelativeRadii& radii, const ContactMaterials& materials) {
+  rejectUnknownKeys(law, {"type", "cells"}, where);
+  const double cells = number(law, "cells", where, 16.0);
+  if (!(cells >= 8.0 && cells <= 64.0) || cells != std::floor(cells)) {
+    throw InputError(where + ": 'cells' (per side of the coarse grid) must be an integer in [8, 64]");
+  }
+  cells_ = static_cast<int>(cells);
+  weight_ = trueGapWeight(A.shape, B.shape);
+  curve_ = std::make_unique<TrueGapCurve>(PairGap({A.shape, A.pose}, {B.shape, B.pose}, contact), radii, materials.effectiveModulus(),
+                                          weight_, cells_);
+}
+
+TrueGapLaw::~TrueGapLaw() = default;
+
+LawSample TrueGapLaw::at(double overlap) {
+  const NormalResponse r = curve_->at(overlap);
+  if (!r.acting) return {};
+  return {r.force, r.area, "elastic", true};
+}
+
+json TrueGapLaw::constants() const { return {{"cells", cells_}, {"true_gap_weight", weight_}}; }
+
+}  // namespace sqdem::probe

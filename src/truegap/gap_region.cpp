@@ -1,0 +1,101 @@
+#include "sqdem/truegap/gap_region.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include <Eigen/Eigenvalues>
+
+namespace sqdem {
+namespace {
+
+constexpr int rays = 16;
+
+/// An ellipse's frame on the plane: its major axis at `angle` from t1, minor over major `aspect`.
+struct RayFrame {
+  double angle = 0.0, aspect = 1.0;
+
+  Vec2 direction(int k) const {  // the k-th ray, evenly spread over the ellipse
+    const double t = 2.0 * std::numbers::pi * k / rays;
+    const Vec2 e1(std::cos(angle), std::sin(angle)), e2(-e1.y(), e1.x());
+    return std::cos(t) * e1 + aspect * std::sin(t) * e2;
+  }
+};
+
+/// rho where the gap along rho d first reaches the level (the gap is convex and below it at 0):
+/// bracketed from `guess` by factors of 2, then bisected to 1/128 of the bracket.
+double crossing(const PairGap& gap, double level, const Vec2& d, double guess, double limit) {
+  const auto below = [&](double rho) { return gap(rho * d.x(), rho * d.y()) < level; };
+  double inside = 0.0, outside = guess;
+  while (below(outside)) {
+    inside = outside;
+    outside *= 2.0;
+    if (outside > limit) throw std::runtime_error("the true gap: the region where it is below the approach is not bounded");
+  }
+  while (inside == 0.0 && outside > 1e-12 * limit && !below(0.5 * outside)) outside *= 0.5;
+  if (inside == 0.0) inside = 0.5 * outside;
+  for (int k = 0; k < 7; ++k) {
+    const double middle = 0.5 * (inside + outside);
+    (below(middle) ? inside : outside) = middle;
+  }
+  return outside;
+}
+
+}  // namespace
+
+GapGrid gapRegionGrid(const PairGap& gap, double level, int cells, double margin) {
+  if (!(level > 0.0) || cells < 2 || !(margin >= 0.0)) throw std::invalid_argument("gapRegionGrid: level > 0, cells >= 2, margin >= 0");
+  if (!(gap(0.0, 0.0) < level)) {
+    throw std::runtime_error("the true gap: no point of the tangent plane where it is below the approach " + std::to_string(level) + " m");
+  }
+  const double limit = 1e3 * gap.referenceLength();
+  RayFrame frame{0.0, gap.quadraticAspect()};
+  double guess = std::sqrt(2.0 * gap.majorRadius() * level);
+  std::array<Vec2, rays> crossings;
+  for (int pass = 0; pass < 8; ++pass) {
+    Vec2 mean = Vec2::Zero();
+    for (int k = 0; k < rays; ++k) {
+      const Vec2 d = frame.direction(k);
+      guess = crossing(gap, level, d, guess, limit);
+      crossings[k] = guess * d;
+      mean += crossings[k] / rays;
+    }
+    Mat2 spread = Mat2::Zero();
+    for (const Vec2& p : crossings) spread += (p - mean) * (p - mean).transpose();
+    const Eigen::SelfAdjointEigenSolver<Mat2> axes(spread);  // eigenvalues ascending
+    const Vec2 major = axes.eigenvectors().col(1);
+    const RayFrame next{std::atan2(major.y(), major.x()), std::sqrt(std::max(axes.eigenvalues()(0), 0.0) / axes.eigenvalues()(1))};
+    const double turn = std::abs(std::remainder(next.angle - frame.angle, std::numbers::pi));
+    const bool settled = std::abs(std::log(next.aspect / frame.aspect)) < 0.1 && turn < 0.1 * next.aspect;
+    frame = next;
+    if (settled) break;
+  }
+  // The grid along the crossings' principal axes, over their extent and the margin (the region
+  // bulges past the polygon of its crossings by ~2 % between rays).
+  const Vec2 e1(std::cos(frame.angle), std::sin(frame.angle)), e2(-e1.y(), e1.x());
+  double low1 = 0.0, high1 = 0.0, low2 = 0.0, high2 = 0.0;
+  for (const Vec2& p : crossings) {
+    low1 = std::min(low1, p.dot(e1)), high1 = std::max(high1, p.dot(e1));
+    low2 = std::min(low2, p.dot(e2)), high2 = std::max(high2, p.dot(e2));
+  }
+  const double pad1 = margin * (high1 - low1), pad2 = margin * (high2 - low2);
+  GapGrid grid;
+  grid.nx = grid.ny = cells;
+  grid.x0 = low1 - pad1;
+  grid.y0 = low2 - pad2;
+  grid.hx = (high1 - low1 + 2.0 * pad1) / cells;
+  grid.hy = (high2 - low2 + 2.0 * pad2) / cells;
+  grid.gap.resize(static_cast<std::size_t>(cells) * cells);
+  for (int j = 0; j < cells; ++j) {
+    for (int i = 0; i < cells; ++i) {
+      const Vec2 p = grid.x(i) * e1 + grid.y(j) * e2;
+      grid.gap[i + static_cast<std::size_t>(cells) * j] = gap(p.x(), p.y());
+    }
+  }
+  return grid;
+}
+
+}  // namespace sqdem
