@@ -45,7 +45,7 @@ const std::vector<Case>& cases() {
 
 TrueGapCurve curveOf(const Case& c) {
   const testing::PosedPair& p = c.pair;
-  return TrueGapCurve(PairGap({p.A, p.poseA}, {p.B, p.poseB}, p.contact), c.radii, 1e9, trueGapWeight(p.A, p.B), 16);
+  return TrueGapCurve({p.A, p.poseA}, {p.B, p.poseB}, p.contact, c.radii, 1e9, 16);
 }
 
 void trueGapFirstOverlap(benchmark::State& state) {

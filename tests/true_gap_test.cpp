@@ -17,9 +17,13 @@
 #include <string>
 #include <vector>
 
+#include <omp.h>
+
 #include "sqdem/mechanics/hertz_law.hpp"
 #include "sqdem/truegap/pair_contact.hpp"
 #include "sqdem/truegap/true_gap_curve.hpp"
+#include "sqdem/validation/table1.hpp"
+#include "sqdem/world/world.hpp"
 #include "support/posed_pair.hpp"
 
 namespace sqdem {
@@ -37,9 +41,7 @@ NormalContact hertzOf(const PosedPair& p) {
   return c;
 }
 
-TrueGapCurve curveOf(const PosedPair& p) {
-  return TrueGapCurve(PairGap({p.A, p.poseA}, {p.B, p.poseB}, p.contact), hertzOf(p).radii, 1.0, trueGapWeight(p.A, p.B), 16);
-}
+TrueGapCurve curveOf(const PosedPair& p) { return TrueGapCurve({p.A, p.poseA}, {p.B, p.poseB}, p.contact, hertzOf(p).radii, 1.0, 16); }
 
 TEST(TrueGapLaw, RandomBlockyPairsMeetTheReference) {
   std::mt19937 rng(20261205);
@@ -73,8 +75,8 @@ TEST(TrueGapLaw, TwoEllipsoidsAreEllipticHertz) {
   p.poseA.orientation = Quat(Eigen::AngleAxisd(0.3, Vec3(1.0, 2.0, 0.5).normalized()));
   p.poseB.orientation = Quat(Eigen::AngleAxisd(1.1, Vec3(-0.4, 0.2, 1.0).normalized()));
   ASSERT_TRUE(testing::slideToOverlap(p, Vec3(0.3, -0.5, 0.8).normalized(), 1e-4));
-  EXPECT_EQ(trueGapWeight(p.A, p.B), 0.0);
   TrueGapCurve curve = curveOf(p);
+  EXPECT_EQ(curve.weight(), 0.0);
   const NormalContact hertz = hertzOf(p);
   for (const double delta : {1e-6, 1e-4, 1e-2}) {
     HertzLaw::History none;
@@ -103,7 +105,7 @@ TEST(TrueGapLaw, NearEllipsoidsBlendHertzIn) {
     for (const double f : {1e-4, 3e-2}) {
       const double law = curve.at(f * R).force;
       const double reference = boundaryElementContact({p.A, p.poseA}, {p.B, p.poseB}, p.contact, f * R, 1.0).force;
-      std::printf("n %.2f (w %.2f) delta/R %.0e: F/F_ref - 1 = %+.4f\n", n, trueGapWeight(p.A, p.B), f, law / reference - 1.0);
+      std::printf("n %.2f (w %.2f) delta/R %.0e: F/F_ref - 1 = %+.4f\n", n, curve.weight(), f, law / reference - 1.0);
       EXPECT_LT(std::abs(law / reference - 1.0), 0.03);
       if (f == 1e-4 && n == 2.0) ellipsoid = law;
       if (f == 1e-4 && n == 2.01) EXPECT_NEAR(law / ellipsoid, 1.0, 2e-3);
@@ -161,6 +163,48 @@ TEST(TrueGapLaw, RollingAFaceOntoAnEdgeIsContinuous) {
     lastLaw = law;
     lastReference = reference;
   }
+}
+
+/// The normal force of the engine's contact between two bodies of `shape` at poses A (origin,
+/// identity) and `poseB` under `law` (E = 1 GPa, nu = 0.3, no friction), on `threads` threads.
+double engineForce(const Superquadric& shape, const Pose& poseB, const NormalLaw& law, int threads) {
+  omp_set_num_threads(threads);
+  Domain box;
+  box.lo = Vec3::Constant(-10.0);
+  box.hi = Vec3::Constant(10.0);
+  World world({shape}, {Material{1e9, 0.3, 2000.0, 0.0, 1.0}}, box, 0.05);
+  ContactModel model = world.defaultContactModel(0, 0);
+  model.normal = law;
+  model.eccentricity = EccentricityMethod::Exact;
+  world.setContactModel(0, 0, model);
+  world.addParticle(0, 0, Vec3::Zero(), Quat::Identity());
+  world.addParticle(0, 0, poseB.position, poseB.orientation);
+  world.setTimeStep(1e-6);
+  world.computeForces();
+  double force = 0.0;
+  for (const ContactView c : world.contacts()) force = c.normalLoad().force;
+  return force;
+}
+
+// The law in the engine (interaction/contact_kernels.cpp): its rungs solved on the pose the
+// curvature cache keeps, rebuilt in A's frame, give the force of the law at the pair's own pose
+// (Table 1 case 2 at delta / R_vol = 1e-3: a face on an edge) to the region search's resolution,
+// the same bits on one thread and two; two ellipsoids get elliptic Hertz's bits.
+TEST(TrueGapLaw, TheEngineSolvesTheSameLaw) {
+  const Superquadric shape = table1Shape();
+  const Table1Result r = runTable1Case(table1Cases[1], 1e-3);
+  const double E = effectiveModulus(1e9, 0.3, 1e9, 0.3);
+  TrueGapCurve curve({shape, Pose{}}, {shape, r.second}, r.contact, relativeRadii(r.contact.curvatureA, r.contact.curvatureB, 10.0 * shape.volumeEquivalentRadius()), E, 16);
+  const double law = curve.at(r.contact.overlap).force, engine = engineForce(shape, r.second, TrueGapLaw{}, 1);
+  std::printf("engine %.9e N, the law at the pose %.9e N (%+.2e), elliptic Hertz %.9e N\n", engine, law, engine / law - 1.0,
+              engineForce(shape, r.second, HertzLaw{}, 1));
+  EXPECT_NEAR(engine / law, 1.0, 1e-3);
+  EXPECT_EQ(engineForce(shape, r.second, TrueGapLaw{}, 2), engine);
+  const Superquadric ellipsoid = Superquadric::ellipsoid(1.0, 0.7, 0.5);
+  const Pose touching{Vec3(0.3, 0.2, 0.99), Quat(Eigen::AngleAxisd(0.4, Vec3(1.0, 1.0, 0.0).normalized()))};
+  const double hertz = engineForce(ellipsoid, touching, HertzLaw{}, 1);
+  EXPECT_GT(hertz, 0.0);
+  EXPECT_EQ(engineForce(ellipsoid, touching, TrueGapLaw{}, 1), hertz);
 }
 
 }  // namespace

@@ -86,6 +86,11 @@ void printSummary(const World& world, const RunReport& report, double wall, cons
                 "reach), %lld contacts outside their law's valid parameters (no force)\n",
                 st.lostAdhesions, st.lawFailures);
   }
+  if (world.interactions().store().withTrueGap) {
+    std::printf("true-gap law: %lld rungs solved (half-space contacts on its coarse grid), %.3g per detector call; %lld contact-steps "
+                "on elliptic Hertz where a rung failed\n",
+                st.trueGapRungs, st.detectorCalls ? static_cast<double>(st.trueGapRungs) / st.detectorCalls : 0.0, st.trueGapFallbacks);
+  }
   if (world.interactions().store().withBonds) {
     std::printf("bonds: %zu intact, %lld broken, %lld lost (their pair left the neighbour list intact: raise 'skin')\n",
                 world.bondCount(), st.bondsBroken, st.lostBonds);

@@ -56,11 +56,11 @@ inline NormalContact normalContact(const ContactModel& model, const ContactGeome
 }
 
 /// The law's view of a solved contact: its radii and factors, and the major axis when the
-/// tangential spring works on the ellipse.
+/// tangential spring works on the ellipse or the true-gap law lays its plane's axes on it.
 inline LawGeometry lawGeometry(const ContactModel& model, const ContactGeometry& geometry,
                                const ContactKinematics& motion) {
   LawGeometry g{geometry.overlap, geometry.normal, normalContact(model, geometry, motion), Vec3::Zero()};
-  if (model.tangential.elliptic && model.tangential.friction > 0.0) {
+  if ((model.tangential.elliptic && model.tangential.friction > 0.0) || std::holds_alternative<TrueGapLaw>(model.normal)) {
     g.majorAxis = contactMajorAxis(geometry.curvatureA, geometry.curvatureB, geometry.normal);
   }
   return g;

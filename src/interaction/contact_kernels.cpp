@@ -4,6 +4,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <optional>
 #include <span>
@@ -14,6 +15,7 @@
 #include "round_hertz_lanes.hpp"
 #include "sqdem/contact/detector.hpp"
 #include "sqdem/interaction/interactions.hpp"
+#include "sqdem/truegap/true_gap_rungs.hpp"
 
 namespace sqdem {
 namespace {
@@ -156,6 +158,7 @@ LawGeometry cachedLawGeometry(const InteractionScene& scene, const ContactModel&
     const LawGeometry fresh = detail::lawGeometry(model, g, motion);
     cache = {g.localPointA, g.localPointB, relative.coeffs(), fresh.contact.radii, fresh.contact.factors,
              RA.transpose() * fresh.majorAxis};
+    if (s.withTrueGap) s.trueGap[k].solved = 0;  // solved on the pose the cache kept
     return fresh;
   }
   LawGeometry held{g.overlap, g.normal, detail::sizedContact(model, motion), Vec3::Zero()};
@@ -166,6 +169,35 @@ LawGeometry cachedLawGeometry(const InteractionScene& scene, const ContactModel&
     held.majorAxis = (u - u.dot(g.normal) * g.normal).normalized();
   }
   return held;
+}
+
+/// The true-gap law's rungs around contact k's overlap (mechanics/true_gap_law.hpp), handed to
+/// the law in `view`: solved on the pose the curvature cache keeps (its points and the bodies'
+/// relative orientation: the same rungs from the same cache on any thread or rank, and after a
+/// restart), or, without a cache, on the step's own pose (and dropped after it). When a rung's
+/// half-space contact fails the step takes elliptic Hertz (no rungs handed on), counted.
+template <PairKind Kind>
+void attachTrueGapRungs(const InteractionScene& scene, const ContactModel& model, const TrueGapLaw& law, bool cached, ContactStore& s,
+                        std::uint32_t k, const ContactGeometry& g, LawGeometry& view, long long& solves, long long& fallbacks) {
+  const ParticleStore& p = scene.particles;
+  const std::uint32_t a = s.a[k], b = s.b[k];
+  const Superquadric &A = scene.shapes[p.shape[a]], &B = scene.shapes[p.shape[b]];
+  TrueGapRungs& rungs = s.trueGap[k];
+  if (rungs.length == 0.0) rungs = trueGapLadder(A, B);
+  if (!cached) rungs.solved = 0;
+  view.contact.trueGap = &rungs;
+  if (rungs.weight == 0.0 || !(view.overlap > 0.0)) return;
+  const int segment = rungs.segment(view.overlap);
+  if (rungs.has(segment) && rungs.has(segment + 1)) return;
+  const CurvatureCache& c = s.curvatureCache[k];
+  const PairGap gap = cached ? PairGap::touchingAt(A, B, c.localA, c.localB, Quat(c.relative), c.majorAxisA, c.radii)
+                             : PairGap({A, poseOf(p, a)}, {B, poseOf(p, b)}, g);
+  const int before = std::popcount(rungs.solved);
+  if (!solveRungs(rungs, gap, model.effectiveModulus, law.cells, segment, segment + 1)) {
+    view.contact.trueGap = nullptr;
+    ++fallbacks;
+  }
+  solves += std::popcount(rungs.solved) - before;
 }
 
 /// The model as a kind runs it: a round contact (pair_kind.hpp) on the circle, without curvatures.
@@ -188,7 +220,7 @@ void groupKernel(std::span<const std::uint32_t> members, const ContactModel& pai
   [[maybe_unused]] const detail::RoundHertz roundHertz(model);
   const bool cached = cachesCurvatures(model, Kind), moments = s.withMoment();
   const double cosHalfAngle = std::cos(0.5 * model.curvatureTolerance);
-  long long calls = 0, iterations = 0, confirmations = 0, failures = 0, deep = 0, lost = 0, invalid = 0;
+  long long calls = 0, iterations = 0, confirmations = 0, failures = 0, deep = 0, lost = 0, invalid = 0, rungSolves = 0, rungFallbacks = 0;
   long long byStatus[contactStatusCount] = {};
   const auto count = static_cast<std::ptrdiff_t>(members.size());
   for (std::ptrdiff_t m = 0; m < count; ++m) {
@@ -231,7 +263,7 @@ void groupKernel(std::span<const std::uint32_t> members, const ContactModel& pai
       if constexpr (round(Kind) && std::is_same_v<Law, HertzLaw>) {
         force = detail::roundHertzForce(model, roundHertz, motion, g.overlap, g.normal, history, scene.dt);
       } else {
-        const LawGeometry view = [&] {
+        LawGeometry view = [&] {
           if constexpr (round(Kind)) {
             return LawGeometry{g.overlap, g.normal, detail::circularContact(model, motion), Vec3::Zero()};
           } else {
@@ -239,6 +271,9 @@ void groupKernel(std::span<const std::uint32_t> members, const ContactModel& pai
                           : detail::lawGeometry(model, g, motion);
           }
         }();
+        if constexpr (std::is_same_v<Law, TrueGapLaw> && !round(Kind) && !withWall(Kind)) {
+          attachTrueGapRungs<Kind>(scene, model, law, cached, s, k, g, view, rungSolves, rungFallbacks);
+        }
         contact = view.contact;
         force = detail::contactForce(model, law, view, motion, history, scene.dt);
       }
@@ -290,6 +325,8 @@ void groupKernel(std::span<const std::uint32_t> members, const ContactModel& pai
     (model.deepOverlapsExpected ? statistics.expectedDeepOverlaps : statistics.deepOverlaps) += deep;
     statistics.lostAdhesions += lost;
     statistics.lawFailures += invalid;
+    statistics.trueGapRungs += rungSolves;
+    statistics.trueGapFallbacks += rungFallbacks;
   }
 }
 

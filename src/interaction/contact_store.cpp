@@ -89,24 +89,19 @@ void ContactStore::read(CheckpointReader& in) {
 }
 
 void ContactStore::writeArrays(CheckpointWriter& out) const {
-  for (const bool flag : {withRolling, withCurvatureCache, withEnergy, withBonds}) out.put(static_cast<std::uint8_t>(flag));
+  for (const bool flag : {withRolling, withCurvatureCache, withTrueGap, withEnergy, withBonds}) out.put(static_cast<std::uint8_t>(flag));
   forEachArray(*this, [&](const auto& array) { out.putVector(array); });
 }
 
 ContactStore ContactStore::readArrays(CheckpointReader& in, const ContactStore& layout) {
-  std::uint8_t rolling = 0, cache = 0, energy = 0, bonds = 0;
-  in.get(rolling);
-  in.get(cache);
-  in.get(energy);
-  in.get(bonds);
-  requireIntact(rolling == layout.withRolling && cache == layout.withCurvatureCache && energy == layout.withEnergy &&
-                    bonds == layout.withBonds,
-                "optional contact arrays");
   ContactStore s;
-  s.withRolling = layout.withRolling;
-  s.withCurvatureCache = layout.withCurvatureCache;
-  s.withEnergy = layout.withEnergy;
-  s.withBonds = layout.withBonds;
+  for (bool* flag : {&s.withRolling, &s.withCurvatureCache, &s.withTrueGap, &s.withEnergy, &s.withBonds}) {
+    std::uint8_t value = 0;
+    in.get(value);
+    requireIntact(value <= 1, "optional contact arrays");
+    *flag = value == 1;
+  }
+  requireIntact(s.sameOptionalArrays(layout), "optional contact arrays");
   const std::uint64_t anyLength = ~std::uint64_t{0};  // bounded by the bytes left
   std::uint64_t count = 0;
   bool first = true;

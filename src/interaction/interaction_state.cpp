@@ -10,9 +10,7 @@ Interactions Interactions::restore(ContactStore store, const InteractionScene& s
                                    const std::vector<std::uint32_t>& ghostOwner) {
   Interactions out;
   const ContactStore expected = emptyStore(scene);
-  requireIntact(store.withRolling == expected.withRolling && store.withCurvatureCache == expected.withCurvatureCache &&
-                    store.withEnergy == expected.withEnergy && store.withBonds == expected.withBonds,
-                "optional contact arrays");
+  requireIntact(store.sameOptionalArrays(expected), "optional contact arrays");
   const std::size_t n = scene.particles.size(), slots = scene.particles.slots(), walls = scene.walls.size();
   const std::vector<std::uint32_t>& id = scene.particles.id;
   for (std::size_t k = 0; k < store.size(); ++k) {

@@ -36,6 +36,7 @@ ContactStore emptyStore(const InteractionScene& scene) {
     s.withRolling = s.withRolling || m.rolling.has_value();
     s.withBonds = s.withBonds || m.bond.has_value();
     s.withCurvatureCache = s.withCurvatureCache || (anyNonRound && m.usesCurvatures() && m.curvatureTolerance > 0.0);
+    s.withTrueGap = s.withTrueGap || (anyNonRound && std::holds_alternative<TrueGapLaw>(m.normal));
   }
   return s;
 }
@@ -107,10 +108,7 @@ const std::vector<std::uint32_t>& Interactions::listActing() const {
 
 void Interactions::fitStore(const InteractionScene& scene) {
   const ContactStore wanted = emptyStore(scene);
-  if (wanted.withRolling == store_.withRolling && wanted.withCurvatureCache == store_.withCurvatureCache &&
-      wanted.withEnergy == store_.withEnergy && wanted.withBonds == store_.withBonds) {
-    return;
-  }
+  if (wanted.sameOptionalArrays(store_)) return;
   ContactStore fitted = wanted;
   for (std::size_t k = 0; k < store_.size(); ++k) {
     fitted.add(store_.key(k), store_.a[k], store_.b[k], store_.wallImage[k]);

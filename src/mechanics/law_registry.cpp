@@ -11,7 +11,7 @@ namespace {
 static_assert(NormalLawComponent<HertzLaw> && NormalLawComponent<GreenwoodWilliamsonLaw> &&
               NormalLawComponent<BeckerKamlahLaw> && NormalLawComponent<HaervigJkrLaw> &&
               NormalLawComponent<EllipticJkrLaw> && NormalLawComponent<RoughJkrLaw> &&
-              NormalLawComponent<NanAdhesiveLaw> && NormalLawComponent<JamariLaw>);
+              NormalLawComponent<NanAdhesiveLaw> && NormalLawComponent<JamariLaw> && NormalLawComponent<TrueGapLaw>);
 
 /// Refuses any key of `in` that is not in `allowed` (`what` names whose keys they are).
 void allowOnly(const LawInput& in, std::span<const std::string_view> allowed, std::string_view what);
@@ -55,6 +55,7 @@ constexpr std::array entries{
     NormalLawEntry{"elliptic_jkr", true, jkrKeys, readJkr, traitsOf<EllipticJkrLaw>(Adhesion::Always)},
     NormalLawEntry{"nan_adhesive", true, NanAdhesiveLaw::keys, readAs<NanAdhesiveLaw>, traitsOf<NanAdhesiveLaw>(Adhesion::Always)},
     NormalLawEntry{"jamari", true, JamariLaw::keys, readAs<JamariLaw>, traitsOf<JamariLaw>(Adhesion::Never)},
+    NormalLawEntry{"true_gap", true, TrueGapLaw::keys, readAs<TrueGapLaw>, traitsOf<TrueGapLaw>(Adhesion::Never)},
 };
 
 /// Why a key of some laws is not combined with law `what` (appended to the message).

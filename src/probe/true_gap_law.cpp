@@ -14,9 +14,8 @@ TrueGapLaw::TrueGapLaw(const json& law, const std::string& where, const Particle
     throw InputError(where + ": 'cells' (per side of the coarse grid) must be an integer in [8, 64]");
   }
   cells_ = static_cast<int>(cells);
-  weight_ = trueGapWeight(A.shape, B.shape);
-  curve_ = std::make_unique<TrueGapCurve>(PairGap({A.shape, A.pose}, {B.shape, B.pose}, contact), radii, materials.effectiveModulus(),
-                                          weight_, cells_);
+  curve_ = std::make_unique<TrueGapCurve>(PairBody{A.shape, A.pose}, PairBody{B.shape, B.pose}, contact, radii,
+                                          materials.effectiveModulus(), cells_);
 }
 
 TrueGapLaw::~TrueGapLaw() = default;
@@ -27,6 +26,6 @@ LawSample TrueGapLaw::at(double overlap) {
   return {r.force, r.area, "elastic", true};
 }
 
-json TrueGapLaw::constants() const { return {{"cells", cells_}, {"true_gap_weight", weight_}}; }
+json TrueGapLaw::constants() const { return {{"cells", cells_}, {"true_gap_weight", curve_->weight()}}; }
 
 }  // namespace sqdem::probe

@@ -8,16 +8,31 @@
 
 namespace sqdem {
 
-PairGap::PairGap(const PairBody& A, const PairBody& B, const ContactGeometry& contact)
-    : A_(A), B_(B), origin_(0.5 * (contact.pointA + contact.pointB)), normal_(contact.normal), overlap_(contact.overlap),
-      referenceLength_(referenceVolumeRadius(A.shape, B.shape)) {
+namespace {
+
+const ContactGeometry& converged(const ContactGeometry& contact) {
   if (!contact.converged()) throw std::invalid_argument("the true gap: the detector's contact did not converge");
-  t1_ = contactMajorAxis(contact.curvatureA, contact.curvatureB, normal_);
-  t2_ = normal_.cross(t1_);
-  const RelativeRadii radii = relativeRadii(contact.curvatureA, contact.curvatureB, 10.0 * referenceLength_);
-  quadraticAspect_ = std::sqrt(radii.ratio());
-  majorRadius_ = radii.Rj;
+  return contact;
 }
+
+}  // namespace
+
+PairGap::PairGap(const PairBody& A, const PairBody& B, const ContactGeometry& contact)
+    : PairGap(A, B, 0.5 * (converged(contact).pointA + contact.pointB), contact.normal,
+              contactMajorAxis(contact.curvatureA, contact.curvatureB, contact.normal), contact.overlap,
+              relativeRadii(contact.curvatureA, contact.curvatureB, 10.0 * referenceVolumeRadius(A.shape, B.shape))) {}
+
+PairGap PairGap::touchingAt(const Superquadric& A, const Superquadric& B, const Vec3& localA, const Vec3& localB, const Quat& relative,
+                            const Vec3& majorAxisA, const RelativeRadii& radii) {
+  const Pose poseA, poseB{localA - relative * localB, relative};
+  return PairGap({A, poseA}, {B, poseB}, localA, A.outwardNormal(localA).normalized(), majorAxisA, 0.0, radii);
+}
+
+PairGap::PairGap(const PairBody& A, const PairBody& B, const Vec3& origin, const Vec3& normal, const Vec3& t1, double overlap,
+                 const RelativeRadii& radii)
+    : A_(A), B_(B), origin_(origin), normal_(normal), t1_((t1 - t1.dot(normal) * normal).normalized()), t2_(normal.cross(t1_)),
+      overlap_(overlap), referenceLength_(referenceVolumeRadius(A.shape, B.shape)), quadraticAspect_(std::sqrt(radii.ratio())),
+      majorRadius_(radii.Rj) {}
 
 double PairGap::operator()(double x, double y) const {
   const Vec3 q = origin_ + x * t1_ + y * t2_;

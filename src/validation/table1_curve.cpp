@@ -28,7 +28,7 @@ std::vector<Table1CurvePoint> table1Curve(std::string_view law) {
     // it by each overlap; the Hertz models read the curvatures at each overlap's pose.
     const Table1Result touching = runTable1Case(c, 1e-9);
     const PairBody A{shape, Pose{}}, B{shape, touching.second};
-    TrueGapCurve trueGap(PairGap(A, B, touching.contact), touching.radii, 1.0, trueGapWeight(shape, shape), 16);
+    TrueGapCurve trueGap(A, B, touching.contact, touching.radii, 1.0, 16);
     for (const double f : table1Overlaps) {
       const double delta = f * Rvol, scale = 4.0 / 3.0 * std::sqrt(Rvol) * std::pow(delta, 1.5);
       double force = 0.0;

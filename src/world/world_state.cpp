@@ -20,7 +20,7 @@ namespace {
 
 /// The payload's version: raised whenever writeState (or the run checkpoint around it) writes other
 /// records or in another order.
-constexpr std::uint64_t stateVersion = 18;
+constexpr std::uint64_t stateVersion = 19;
 
 /// Checks what the engine will follow in a whole state of n particles and `walls` walls (every
 /// rank reads the same, so every rank throws alike).
@@ -54,7 +54,7 @@ void requireWholeIntact(const WholeState& whole, std::size_t walls, const std::v
 std::uint64_t World::stateFingerprint() {
   Fingerprint f;
   for (const std::size_t size : {sizeof(Wall), sizeof(ContactStatistics), sizeof(Vec3), sizeof(Quat), sizeof(Vec4),
-                                 sizeof(ContactStatus), sizeof(NormalHistory), sizeof(NormalLoad), sizeof(ContactEnergy),
+                                 sizeof(ContactStatus), sizeof(NormalHistory), sizeof(NormalLoad), sizeof(ContactEnergy), sizeof(TrueGapRungs),
                                  sizeof(EnergyLedger)}) {
     f(static_cast<std::uint64_t>(size));
   }

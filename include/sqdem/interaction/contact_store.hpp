@@ -12,15 +12,16 @@
 //   warm start   status, both surface points in their body frames, the separation bound
 //   geometry     normal, overlap, contact point (the reduction's lever arm)
 //   histories    tangential spring, the normal law's record, the rolling displacement
-//   law cache    the curvature-derived law constants (curvature_cache.hpp)
+//   law cache    the curvature-derived law constants (curvature_cache.hpp) and the true-gap
+//                law's rungs solved on the pose the cache keeps (mechanics/true_gap_law.hpp)
 //   load         acting, force and moment on B, the normal force's parts and the area (carried
 //                with the state: the energy ledger integrates from the last step's load)
 //   energy       the contact's stored energy and the work it absorbed in the last step
 //   bond         a parallel bond between the two bodies, where one formed (bond_frame.hpp)
 // The rolling displacement exists only in a store made withRolling, the moment withRolling or
-// withBonds, the law cache only withCurvatureCache, the energy only withEnergy, the bond only
-// withBonds (a scene without rolling resistance, caching, an energy ledger or bonds stores none
-// of them). A bond outlives a failed solve of its pair (reset keeps it).
+// withBonds, the law cache only withCurvatureCache, the rungs only withTrueGap, the energy only
+// withEnergy, the bond only withBonds (a scene without rolling resistance, caching, the true-gap
+// law, an energy ledger or bonds stores none of them). A bond outlives a failed solve of its pair (reset keeps it).
 // Curvatures themselves are not stored: the fused kernels hand them from the detector to the
 // law within one contact. The store is kept in the order the candidates were found (near
 // slots together, for the kernels' memory traffic); key order is Interactions' index of it.
@@ -35,6 +36,7 @@
 #include "sqdem/interaction/curvature_cache.hpp"
 #include "sqdem/mechanics/bond_frame.hpp"
 #include "sqdem/mechanics/normal_law.hpp"
+#include "sqdem/mechanics/true_gap_law.hpp"
 
 namespace sqdem {
 
@@ -105,6 +107,7 @@ struct ContactStore {
   std::vector<NormalHistory> normalHistory;  ///< the normal law's record
   std::vector<Vec3> rolling;               ///< rolling displacement (m), withRolling only
   std::vector<CurvatureCache> curvatureCache;  ///< withCurvatureCache only
+  std::vector<TrueGapRungs> trueGap;           ///< withTrueGap only
 
   std::vector<std::uint8_t> acting;  ///< carried force in the last computation
   std::vector<Vec3> force;           ///< on B (N); A receives -force
@@ -115,8 +118,15 @@ struct ContactStore {
 
   bool withRolling = false;
   bool withCurvatureCache = false;
+  bool withTrueGap = false;
   bool withEnergy = false;
   bool withBonds = false;
+
+  /// Whether `other` keeps the same optional arrays.
+  bool sameOptionalArrays(const ContactStore& other) const {
+    return withRolling == other.withRolling && withCurvatureCache == other.withCurvatureCache && withTrueGap == other.withTrueGap &&
+           withEnergy == other.withEnergy && withBonds == other.withBonds;
+  }
 
   /// The moment array is kept: rolling resistance or bonds.
   bool withMoment() const { return withRolling || withBonds; }
@@ -133,7 +143,7 @@ struct ContactStore {
       std::tuple{&ContactStore::status, &ContactStore::localA, &ContactStore::localB, &ContactStore::separation,
                  &ContactStore::normal, &ContactStore::overlap, &ContactStore::point, &ContactStore::spring,
                  &ContactStore::normalHistory, &ContactStore::rolling, &ContactStore::curvatureCache,
-                 &ContactStore::force, &ContactStore::moment, &ContactStore::load};
+                 &ContactStore::trueGap, &ContactStore::force, &ContactStore::moment, &ContactStore::load};
   /// Calls f(array) for every array, in a fixed order: the one list that checkpoints,
   /// re-ordering and resizing use, so a new field cannot be forgotten there.
   template <typename Store, typename F>
@@ -155,6 +165,7 @@ struct ContactStore {
     if (array == &moment) return withMoment();
     if (array == &energy) return withEnergy;
     if (array == &bond) return withBonds;
+    if (array == &trueGap) return withTrueGap;
     return array != &curvatureCache || withCurvatureCache;
   }
 

@@ -48,6 +48,8 @@ struct ContactStatistics {
   /// within its cut-off): should stay 0, the cut-off covers ContactModel::reach.
   long long lostAdhesions = 0;
   long long lawFailures = 0;       ///< contacts whose law had no valid form (NormalResponse::valid)
+  long long trueGapRungs = 0;      ///< rungs of the true-gap law solved (mechanics/true_gap_law.hpp)
+  long long trueGapFallbacks = 0;  ///< its contact-steps on elliptic Hertz: a rung's half-space contact failed
   long long bondsBroken = 0;       ///< bonds whose stresses reached a strength (parallel_bond.hpp)
   /// Intact bonds dropped because their pair left the candidate list (stretched beyond the
   /// skin): should stay 0.
@@ -58,7 +60,7 @@ struct ContactStatistics {
   static void forEachCount(Statistics& s, F&& f) {
     for (auto* count : {&s.detectorCalls, &s.detectorIterations, &s.detectorConfirmations, &s.detectorFailures, &s.deepOverlaps, &s.expectedDeepOverlaps,
                         &s.lostAdhesions,
-                        &s.lawFailures, &s.bondsBroken, &s.lostBonds}) {
+                        &s.lawFailures, &s.trueGapRungs, &s.trueGapFallbacks, &s.bondsBroken, &s.lostBonds}) {
       f(*count);
     }
     for (auto& count : s.failuresByStatus) f(count);

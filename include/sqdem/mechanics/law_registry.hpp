@@ -15,6 +15,8 @@
 //     + roughness: RoughJkrLaw, Eq. 29 with elliptic JKR asperities                 -
 //   nan_adhesive         NanAdhesiveLaw          000 Eqs. 1-67                    attached, alpha_max
 //   jamari               JamariLaw               004 Eqs. 41-46 + elastic unloading  largest overlap
+//   true_gap             TrueGapLaw              half-space contact of the true gap   (rungs kept
+//                                                (docs/contact_laws.md)               per contact)
 
 #include <optional>
 #include <cstdint>
@@ -32,11 +34,12 @@
 #include "sqdem/mechanics/law_input.hpp"
 #include "sqdem/mechanics/nan_adhesive.hpp"
 #include "sqdem/mechanics/roughness_gw.hpp"
+#include "sqdem/mechanics/true_gap_law.hpp"
 
 namespace sqdem {
 
 using NormalLaw = std::variant<HertzLaw, GreenwoodWilliamsonLaw, BeckerKamlahLaw, HaervigJkrLaw, EllipticJkrLaw,
-                               RoughJkrLaw, NanAdhesiveLaw, JamariLaw>;
+                               RoughJkrLaw, NanAdhesiveLaw, JamariLaw, TrueGapLaw>;
 
 /// Whether a law holds contacts by adhesion.
 enum class Adhesion : std::uint8_t { Never, WithSurfaceEnergy, Always };

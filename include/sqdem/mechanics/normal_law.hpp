@@ -37,12 +37,15 @@
 
 namespace sqdem {
 
+struct TrueGapRungs;
+
 /// What a normal law sees of a contact.
 struct NormalContact {
   RelativeRadii radii;          ///< relative principal radii (m); volume spheres: Ri = Rj = R*
   HertzFactors factors;         ///< elliptic Hertz e^2, gamma, beta, K, D (circle for volume spheres)
   double effectiveModulus = 0;  ///< E* (Pa)
   double radiusSum = 0;         ///< r_IJ = R_vol,A + R_vol,B (m; a wall: 2 R_vol,A), 002 Eq. 54
+  const TrueGapRungs* trueGap = nullptr;  ///< the true-gap law's solved rungs (true_gap_law.hpp), none for the others
 };
 
 struct NormalResponse {

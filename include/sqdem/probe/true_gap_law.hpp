@@ -32,7 +32,6 @@ class TrueGapLaw final : public CurveLaw {
  private:
   std::unique_ptr<TrueGapCurve> curve_;
   int cells_;
-  double weight_;
 };
 
 }  // namespace sqdem::probe

@@ -15,6 +15,7 @@
 #include "sqdem/contact/contact_geometry.hpp"
 #include "sqdem/geometry/pose.hpp"
 #include "sqdem/geometry/superquadric.hpp"
+#include "sqdem/mechanics/elliptic.hpp"
 
 namespace sqdem {
 
@@ -28,19 +29,31 @@ class PairGap {
   /// The bodies are kept by reference to their shapes; throws std::invalid_argument when the
   /// detector's contact did not converge.
   PairGap(const PairBody& A, const PairBody& B, const ContactGeometry& contact);
+  /// The gap of two bodies touching at A's body point `localA` and B's `localB`, B turned by
+  /// `relative` = q_A* q_B against A: a contact as its curvature cache keeps it
+  /// (interaction/curvature_cache.hpp), posed in A's frame; `majorAxisA` the contact ellipse's
+  /// major axis (A's frame) and `radii` its relative radii then.
+  static PairGap touchingAt(const Superquadric& A, const Superquadric& B, const Vec3& localA, const Vec3& localB,
+                            const Quat& relative, const Vec3& majorAxisA, const RelativeRadii& radii);
 
   /// The gap (m) above the plane point origin + x t1 + y t2 (x, y in m).
   double operator()(double x, double y) const;
   /// sqrt(R_vol,A R_vol,B) (m): the pair's length scale.
   double referenceLength() const { return referenceLength_; }
-  /// sqrt(R_minor / R_major) of the gap's quadratic form at the contact (relative radii capped
-  /// at 10 R_vol,ref): the aspect of the region where the gap is small, were it Hertz's.
+  /// sqrt(R_minor / R_major) of the gap's quadratic form at the contact (relative radii capped,
+  /// at 10 R_vol,ref from a detector's contact): the aspect of the region where the gap is
+  /// small, were it Hertz's.
   double quadraticAspect() const { return quadraticAspect_; }
   /// The larger relative radius (m), capped as above: the quadratic region along t1 is
   /// sqrt(2 R delta) long.
   double majorRadius() const { return majorRadius_; }
 
  private:
+  /// The plane through `origin` with `normal` and axis t1 (projected on the plane), the gap
+  /// shifted by `overlap`.
+  PairGap(const PairBody& A, const PairBody& B, const Vec3& origin, const Vec3& normal, const Vec3& t1, double overlap,
+          const RelativeRadii& radii);
+
   PairBody A_, B_;
   Vec3 origin_, normal_, t1_, t2_;
   double overlap_, referenceLength_, quadraticAspect_, majorRadius_;

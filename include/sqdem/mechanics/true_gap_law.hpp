@@ -1,0 +1,68 @@
+#pragma once
+// normal: true_gap (docs/contact_laws.md, "The true-gap law"): the normal force of two
+// superquadrics from the half-space contact of their true gap, which holds for any gap,
+// Hertzian or not (a face pressed on an edge). This file is the law's arithmetic on a contact's
+// ladder of solved rungs; truegap/true_gap_rungs.hpp solves the rungs from the pair's gap, and
+// the engine keeps them per contact while its curvature cache holds (curvature_cache.hpp).
+//
+// The ladder: delta_k = 2^k R_ref (k = -20 ... -1, R_ref = sqrt(R_vol,A R_vol,B)), at each rung
+// the force and area of the pair's half-space contact at that approach (16 x 16 cells). Between
+// two rungs the force is the power law through them,
+//   F(delta) = F_k (delta / delta_k)^m_k,   m_k = log2(F_k+1 / F_k),
+// below the lowest rung its segment's law continued to 0, above the highest (delta >= R_ref / 2,
+// far beyond half-space theory) the highest segment's continued; the area likewise. The stiffness is
+// dF/d(delta) = m_k F / delta, the stored energy the integral of F from 0, in closed form on each
+// segment, F_k delta_k / (m_k + 1) [s^(m_k + 1) - 1] with s = delta / delta_k: the force is the
+// energy's derivative at every overlap, and a loading-unloading cycle at a pose does no net work.
+//
+// Near ellipsoids the gap is Hertz's quadratic form: the law blends elliptic Hertz
+// (hertz_law.hpp, 004 Eqs. 1-2) into the rungs' force by the weight
+// w = min(1, max |n - 2| / 0.5) over both bodies' exponents; w = 0 (two ellipsoids) is elliptic
+// Hertz exactly and needs no rung.
+
+#include <array>
+#include <cstdint>
+
+#include "sqdem/mechanics/law_input.hpp"
+#include "sqdem/mechanics/normal_law.hpp"
+
+namespace sqdem {
+
+/// A contact's ladder (above): the rungs solved so far.
+struct TrueGapRungs {
+  static constexpr int lowest = -20, count = 20;  // delta_k = 2^k R_ref, k = -20 ... -1
+
+  std::array<double, count> force{};  ///< (N) at rung k: force[k - lowest]
+  std::array<double, count> area{};   ///< (m^2)
+  std::uint32_t solved = 0;           ///< bit k - lowest: rung k solved
+  double length = 0.0;                ///< R_ref (m)
+  double weight = 0.0;                ///< w of the blend (above)
+
+  double overlap(int k) const;  ///< delta_k (m)
+  /// The lower rung of the segment holding the overlap (the lowest or highest segment's beyond
+  /// the ladder).
+  int segment(double overlap) const;
+  bool has(int k) const { return (solved >> (k - lowest)) & 1u; }
+  void set(int k, double rungForce, double rungArea);
+};
+
+/// The weight w of the blend for the bodies' exponents n1, n2 of A and of B.
+double trueGapWeight(double n1A, double n2A, double n1B, double n2B);
+
+struct TrueGapLaw {
+  static constexpr std::array<std::string_view, 1> keys{"cells"};
+  int cells = 16;  ///< of the coarse grid, per side (8-64)
+
+  struct History {};
+  static TrueGapLaw read(const LawInput& in, const PairElasticity& pair);
+
+  /// c.trueGap holds the rungs around the overlap (unless w = 0); c's radii, factors and E* are
+  /// elliptic Hertz's.
+  NormalResponse force(const NormalContact& c, double overlap, History&) const;
+  /// The integral of the force from 0 (J): needs every rung up to the overlap's segment.
+  double energy(const NormalContact& c, double overlap) const;
+  double range(const History&) const { return 0.0; }
+  double reach(double, double) const { return 0.0; }
+};
+
+}  // namespace sqdem

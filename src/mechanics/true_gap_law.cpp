@@ -1,0 +1,78 @@
+#include "sqdem/mechanics/true_gap_law.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "sqdem/mechanics/hertz_law.hpp"
+
+namespace sqdem {
+
+double TrueGapRungs::overlap(int k) const { return std::ldexp(length, k); }
+
+int TrueGapRungs::segment(double delta) const {
+  return std::clamp(static_cast<int>(std::floor(std::log2(delta / length))), lowest, lowest + count - 2);
+}
+
+void TrueGapRungs::set(int k, double rungForce, double rungArea) {
+  force[k - lowest] = rungForce;
+  area[k - lowest] = rungArea;
+  solved |= 1u << (k - lowest);
+}
+
+double trueGapWeight(double n1A, double n2A, double n1B, double n2B) {
+  const double furthest = std::max({std::abs(n1A - 2.0), std::abs(n2A - 2.0), std::abs(n1B - 2.0), std::abs(n2B - 2.0)});
+  return std::min(1.0, furthest / 0.5);
+}
+
+TrueGapLaw TrueGapLaw::read(const LawInput& in, const PairElasticity&) {
+  TrueGapLaw law;
+  if (in.has("cells")) {
+    const double cells = in.number("cells");
+    if (!(cells >= 8.0 && cells <= 64.0) || cells != std::floor(cells)) {
+      in.fail("cells", "must be an integer in [8, 64] (cells per side of the coarse grid)");
+    }
+    law.cells = static_cast<int>(cells);
+  }
+  return law;
+}
+
+NormalResponse TrueGapLaw::force(const NormalContact& c, double overlap, History&) const {
+  if (!(overlap > 0.0)) return {.acting = false};
+  const double w = c.trueGap != nullptr ? c.trueGap->weight : 0.0;
+  NormalResponse hertz;
+  if (w < 1.0) {
+    HertzLaw::History none;
+    hertz = HertzLaw{}.force(c, overlap, none);
+    if (w == 0.0) return hertz;
+  }
+  const TrueGapRungs& r = *c.trueGap;
+  const int k = r.segment(overlap), i = k - TrueGapRungs::lowest;
+  const double s = overlap / r.overlap(k), m = std::log2(r.force[i + 1] / r.force[i]), force = r.force[i] * std::pow(s, m);
+  const double area = r.area[i] * std::pow(s, std::log2(r.area[i + 1] / r.area[i]));
+  return {.force = (1.0 - w) * hertz.force + w * force,
+          .stiffness = (1.0 - w) * hertz.stiffness + w * m * force / overlap,
+          .area = (1.0 - w) * hertz.area + w * area};
+}
+
+double TrueGapLaw::energy(const NormalContact& c, double overlap) const {
+  if (!(overlap > 0.0)) return 0.0;
+  const double w = c.trueGap != nullptr ? c.trueGap->weight : 0.0;
+  double hertz = 0.0;
+  if (w < 1.0) {
+    HertzLaw::History none;
+    hertz = 0.4 * HertzLaw{}.force(c, overlap, none).force * overlap;  // 2/5 F delta (hertz_law.hpp)
+    if (w == 0.0) return hertz;
+  }
+  const TrueGapRungs& r = *c.trueGap;
+  const int top = r.segment(overlap);
+  double sum = 0.0;
+  for (int k = TrueGapRungs::lowest; k <= top; ++k) {
+    const int i = k - TrueGapRungs::lowest;
+    const double m = std::log2(r.force[i + 1] / r.force[i]), start = r.overlap(k);
+    const double end = k == top ? overlap : r.overlap(k + 1), from = k == TrueGapRungs::lowest ? 0.0 : 1.0;
+    sum += r.force[i] * start / (m + 1.0) * (std::pow(end / start, m + 1.0) - from);
+  }
+  return (1.0 - w) * hertz + w * sum;
+}
+
+}  // namespace sqdem

@@ -1,0 +1,29 @@
+#include "sqdem/truegap/true_gap_rungs.hpp"
+
+#include <stdexcept>
+
+#include "sqdem/truegap/pair_contact.hpp"
+
+namespace sqdem {
+
+TrueGapRungs trueGapLadder(const Superquadric& A, const Superquadric& B) {
+  TrueGapRungs rungs;
+  rungs.length = referenceVolumeRadius(A, B);
+  rungs.weight = trueGapWeight(A.n1(), A.n2(), B.n1(), B.n2());
+  return rungs;
+}
+
+bool solveRungs(TrueGapRungs& rungs, const PairGap& gap, double effectiveModulus, int cells, int first, int last) {
+  for (int k = first; k <= last; ++k) {
+    if (rungs.has(k)) continue;
+    try {
+      const HalfspaceContact c = gapContact(gap, rungs.overlap(k), effectiveModulus, cells);
+      rungs.set(k, c.force, c.area);
+    } catch (const std::runtime_error&) {
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace sqdem
