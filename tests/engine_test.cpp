@@ -534,7 +534,7 @@ TEST(Engine, SceneErrorsNameLineKeyAndWhatIsAllowed) {
   expectSceneError(replaced(bedScene, "shape: grains", "shape: pebbles"), "unknown shape 'pebbles' (defined: grains)");
   expectSceneError(withInteraction("    normal: dmt\n"),
                    "'interactions[0].normal': unknown law 'dmt' (allowed: elliptic_hertz, volume_sphere_hertz, becker_kamlah, "
-                   "haervig_jkr, elliptic_jkr, nan_adhesive, jamari)");
+                   "haervig_jkr, elliptic_jkr, nan_adhesive, jamari, true_gap)");
   expectSceneError(replaced(bedScene, "periodic: [x, y]", "periodic: [x, w]"), "'domain.periodic': directions are x, y, z");
   expectSceneError(replaced(bedScene, "{name: settle, duration: 0.2}", "{name: settle}"), "'stages[0].duration': missing");
   expectSceneError(withInteraction("    normal: volume_sphere_hertz\n    tangential: elliptic_mindlin\n"),

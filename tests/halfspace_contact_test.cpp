@@ -7,7 +7,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 #include <cstdio>
 #include <numbers>
 
@@ -39,6 +42,37 @@ TEST(LoveInfluence, TheCentreOfASquareAndFarAway) {
   // Symmetric in x and y; on the edge lines the finite limit.
   EXPECT_DOUBLE_EQ(loveRectangleDisplacement(0.3, -0.7, 1.0, 0.5), loveRectangleDisplacement(-0.3, 0.7, 1.0, 0.5));
   EXPECT_TRUE(std::isfinite(loveRectangleDisplacement(1.0, 2.0, 1.0, 0.5)));
+}
+
+// The surface displacement of a pressure field is the sum over the loaded cells of Love's
+// rectangle (its definition), whichever way the solver sums it: directly on a 20 x 40 grid (up to
+// 32 x 32 cells' worth), by FFT on a 40 x 40 one.
+TEST(HalfspaceContact, TheDisplacementIsTheSumOfLovesRectangles) {
+  for (const auto& [nx, ny] : {std::pair{20, 40}, std::pair{40, 40}}) {
+    GapGrid grid;
+    grid.nx = nx, grid.ny = ny, grid.hx = 0.3, grid.hy = 0.7;
+    grid.gap.assign(static_cast<std::size_t>(nx) * ny, 1.0);
+    const double E = 2.5;
+    const HalfspaceSolver solver(grid, E);
+    std::vector<double> p(grid.gap.size());
+    for (std::size_t k = 0; k < p.size(); ++k) p[k] = (k % 7 == 0 || k % 11 == 3) ? 1.0 + 0.1 * static_cast<double>(k % 13) : 0.0;
+    const std::vector<double> u = solver.displacement(p);
+    double largest = 0.0;
+    for (int j = 0; j < ny; ++j) {
+      for (int i = 0; i < nx; ++i) {
+        double sum = 0.0;
+        for (int sj = 0; sj < ny; ++sj) {
+          for (int si = 0; si < nx; ++si) {
+            sum += p[si + static_cast<std::size_t>(nx) * sj] * loveRectangleDisplacement((i - si) * grid.hx, (j - sj) * grid.hy, 0.5 * grid.hx, 0.5 * grid.hy);
+          }
+        }
+        sum /= std::numbers::pi * E;
+        largest = std::max(largest, std::abs(u[i + static_cast<std::size_t>(nx) * j] / sum - 1.0));
+      }
+    }
+    std::printf("%d x %d cells: largest relative difference from the definition %.2e\n", nx, ny, largest);
+    EXPECT_LT(largest, 1e-13);
+  }
 }
 
 TEST(HalfspaceContact, TwoSpheresGiveHertz) {

@@ -1,8 +1,8 @@
 // The true-gap law (truegap/true_gap_curve.hpp; docs/contact_laws.md, "The true-gap law")
 // against the 128-cell boundary-element reference of the same gap (truegap/pair_contact.hpp,
 // itself checked against Hertz and Johnson's elliptic Hertz in unit_halfspace_contact): seeded
-// random blocky pairs of the four pose classes over delta / R_ref = 1e-4 ... 3e-2 within 3 % in
-// force (issue 30's target); elliptic Hertz exactly for two ellipsoids (004 Eqs. 1-2); the force
+// random blocky pairs of the four pose classes over delta / R_ref = 1e-4 ... 3e-2 within 1 % in
+// force (issue 30's target: 3 %); elliptic Hertz exactly for two ellipsoids (004 Eqs. 1-2); the force
 // the derivative of the stored energy; continuity along a path that rolls a face contact onto an
 // edge.
 
@@ -64,7 +64,7 @@ TEST(TrueGapLaw, RandomBlockyPairsMeetTheReference) {
   for (auto& [kind, e] : errors) {
     std::sort(e.begin(), e.end());
     std::printf("%-11s largest %.4f median %.4f over %zu\n", kind.c_str(), e.back(), e[e.size() / 2], e.size());
-    EXPECT_LT(e.back(), 0.03) << kind;
+    EXPECT_LT(e.back(), 0.01) << kind;
   }
 }
 
@@ -106,7 +106,7 @@ TEST(TrueGapLaw, NearEllipsoidsBlendHertzIn) {
       const double law = curve.at(f * R).force;
       const double reference = boundaryElementContact({p.A, p.poseA}, {p.B, p.poseB}, p.contact, f * R, 1.0).force;
       std::printf("n %.2f (w %.2f) delta/R %.0e: F/F_ref - 1 = %+.4f\n", n, curve.weight(), f, law / reference - 1.0);
-      EXPECT_LT(std::abs(law / reference - 1.0), 0.03);
+      EXPECT_LT(std::abs(law / reference - 1.0), 0.01);
       if (f == 1e-4 && n == 2.0) ellipsoid = law;
       if (f == 1e-4 && n == 2.01) EXPECT_NEAR(law / ellipsoid, 1.0, 2e-3);
     }
@@ -136,6 +136,12 @@ TEST(TrueGapLaw, ForceDerivesFromTheEnergy) {
   std::printf("work loading %.9e, unloading %.9e, energy difference %.9e (J at E* = 1 Pa)\n", loading, unloading, stored);
   EXPECT_NEAR(loading / stored, 1.0, 1e-5);
   EXPECT_NEAR(unloading / stored, 1.0, 1e-5);
+  // Below the lowest rung (2^-20 R) the force is its segment's power law continued to 0, whose
+  // integral from 0 is F delta / (m + 1) with m = S delta / F.
+  const double low = std::ldexp(R, -22);
+  const NormalResponse lowest = curve.at(low);
+  const double m = lowest.stiffness * low / lowest.force;
+  EXPECT_NEAR(curve.energy(low) / (lowest.force * low / (m + 1.0)), 1.0, 1e-12);
   for (const double f : {2e-5, 3e-4, 5e-3}) {
     const double d = f * R, h = 1e-6 * d;
     EXPECT_NEAR(curve.at(d).stiffness / ((curve.at(d + h).force - curve.at(d - h).force) / (2.0 * h)), 1.0, 1e-5);
@@ -158,16 +164,17 @@ TEST(TrueGapLaw, RollingAFaceOntoAnEdgeIsContinuous) {
     const double delta = 1e-3 * referenceVolumeRadius(p.A, p.B);
     const double law = curve.at(delta).force, reference = boundaryElementContact({p.A, p.poseA}, {p.B, p.poseB}, p.contact, delta, 1.0).force;
     std::printf("%4.1f degrees: F_ref %.6e N, F/F_ref - 1 = %+.4f\n", 2.5 * step, reference, law / reference - 1.0);
-    EXPECT_LT(std::abs(law / reference - 1.0), 0.03);
-    if (step > 0) EXPECT_LT(std::abs(law / lastLaw - reference / lastReference), 0.03);
+    EXPECT_LT(std::abs(law / reference - 1.0), 0.01);
+    if (step > 0) EXPECT_LT(std::abs(law / lastLaw - reference / lastReference), 0.01);
     lastLaw = law;
     lastReference = reference;
   }
 }
 
 /// The normal force of the engine's contact between two bodies of `shape` at poses A (origin,
-/// identity) and `poseB` under `law` (E = 1 GPa, nu = 0.3, no friction), on `threads` threads.
-double engineForce(const Superquadric& shape, const Pose& poseB, const NormalLaw& law, int threads) {
+/// identity) and `poseB` under `law` (E = 1 GPa, nu = 0.3, no friction), on `threads` threads,
+/// computed `times` times at the same pose: the rungs of the first are kept (none solved after it).
+double engineForce(const Superquadric& shape, const Pose& poseB, const NormalLaw& law, int threads, int times = 1) {
   omp_set_num_threads(threads);
   Domain box;
   box.lo = Vec3::Constant(-10.0);
@@ -181,6 +188,9 @@ double engineForce(const Superquadric& shape, const Pose& poseB, const NormalLaw
   world.addParticle(0, 0, poseB.position, poseB.orientation);
   world.setTimeStep(1e-6);
   world.computeForces();
+  const long long rungs = world.totalStatistics().trueGapRungs;
+  for (int k = 1; k < times; ++k) world.computeForces();
+  EXPECT_EQ(world.totalStatistics().trueGapRungs, rungs);
   double force = 0.0;
   for (const ContactView c : world.contacts()) force = c.normalLoad().force;
   return force;
@@ -188,18 +198,20 @@ double engineForce(const Superquadric& shape, const Pose& poseB, const NormalLaw
 
 // The law in the engine (interaction/contact_kernels.cpp): its rungs solved on the pose the
 // curvature cache keeps, rebuilt in A's frame, give the force of the law at the pair's own pose
-// (Table 1 case 2 at delta / R_vol = 1e-3: a face on an edge) to the region search's resolution,
-// the same bits on one thread and two; two ellipsoids get elliptic Hertz's bits.
+// (Table 1 case 2 at delta / R_vol = 1e-3: a face on an edge) to rounding, and keeps them at the
+// same pose (no rung solved again); the same bits on one thread and two (one contact: the team's
+// split is the engine's, tested on beds in validation_engine); two ellipsoids get elliptic
+// Hertz's bits.
 TEST(TrueGapLaw, TheEngineSolvesTheSameLaw) {
   const Superquadric shape = table1Shape();
   const Table1Result r = runTable1Case(table1Cases[1], 1e-3);
   const double E = effectiveModulus(1e9, 0.3, 1e9, 0.3);
   TrueGapCurve curve({shape, Pose{}}, {shape, r.second}, r.contact, relativeRadii(r.contact.curvatureA, r.contact.curvatureB, 10.0 * shape.volumeEquivalentRadius()), E, 16);
-  const double law = curve.at(r.contact.overlap).force, engine = engineForce(shape, r.second, TrueGapLaw{}, 1);
+  const double law = curve.at(r.contact.overlap).force, engine = engineForce(shape, r.second, TrueGapLaw{}, 1, 2);
   std::printf("engine %.9e N, the law at the pose %.9e N (%+.2e), elliptic Hertz %.9e N\n", engine, law, engine / law - 1.0,
               engineForce(shape, r.second, HertzLaw{}, 1));
-  EXPECT_NEAR(engine / law, 1.0, 1e-3);
-  EXPECT_EQ(engineForce(shape, r.second, TrueGapLaw{}, 2), engine);
+  EXPECT_NEAR(engine / law, 1.0, 1e-6);
+  EXPECT_EQ(engineForce(shape, r.second, TrueGapLaw{}, 2, 2), engine);
   const Superquadric ellipsoid = Superquadric::ellipsoid(1.0, 0.7, 0.5);
   const Pose touching{Vec3(0.3, 0.2, 0.99), Quat(Eigen::AngleAxisd(0.4, Vec3(1.0, 1.0, 0.0).normalized()))};
   const double hertz = engineForce(ellipsoid, touching, HertzLaw{}, 1);

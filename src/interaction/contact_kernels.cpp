@@ -158,7 +158,7 @@ LawGeometry cachedLawGeometry(const InteractionScene& scene, const ContactModel&
     const LawGeometry fresh = detail::lawGeometry(model, g, motion);
     cache = {g.localPointA, g.localPointB, relative.coeffs(), fresh.contact.radii, fresh.contact.factors,
              RA.transpose() * fresh.majorAxis};
-    if (s.withTrueGap) s.trueGap[k].solved = 0;  // solved on the pose the cache kept
+    if (s.withTrueGap) s.trueGap[k].forget();  // solved on the pose the cache kept
     return fresh;
   }
   LawGeometry held{g.overlap, g.normal, detail::sizedContact(model, motion), Vec3::Zero()};
@@ -174,8 +174,9 @@ LawGeometry cachedLawGeometry(const InteractionScene& scene, const ContactModel&
 /// The true-gap law's rungs around contact k's overlap (mechanics/true_gap_law.hpp), handed to
 /// the law in `view`: solved on the pose the curvature cache keeps (its points and the bodies'
 /// relative orientation: the same rungs from the same cache on any thread or rank, and after a
-/// restart), or, without a cache, on the step's own pose (and dropped after it). When a rung's
-/// half-space contact fails the step takes elliptic Hertz (no rungs handed on), counted.
+/// restart), or, without a cache, on the step's own pose (and dropped after it). Where a rung's
+/// half-space contact failed on that pose the contact takes elliptic Hertz (no rungs handed on),
+/// counted, until the pose is refreshed.
 template <PairKind Kind>
 void attachTrueGapRungs(const InteractionScene& scene, const ContactModel& model, const TrueGapLaw& law, bool cached, ContactStore& s,
                         std::uint32_t k, const ContactGeometry& g, LawGeometry& view, long long& solves, long long& fallbacks) {
@@ -184,20 +185,25 @@ void attachTrueGapRungs(const InteractionScene& scene, const ContactModel& model
   const Superquadric &A = scene.shapes[p.shape[a]], &B = scene.shapes[p.shape[b]];
   TrueGapRungs& rungs = s.trueGap[k];
   if (rungs.length == 0.0) rungs = trueGapLadder(A, B);
-  if (!cached) rungs.solved = 0;
+  if (!cached) rungs.forget();
   view.contact.trueGap = &rungs;
   if (rungs.weight == 0.0 || !(view.overlap > 0.0)) return;
   const int segment = rungs.segment(view.overlap);
   if (rungs.has(segment) && rungs.has(segment + 1)) return;
-  const CurvatureCache& c = s.curvatureCache[k];
-  const PairGap gap = cached ? PairGap::touchingAt(A, B, c.localA, c.localB, Quat(c.relative), c.majorAxisA, c.radii)
-                             : PairGap({A, poseOf(p, a)}, {B, poseOf(p, b)}, g);
-  const int before = std::popcount(rungs.solved);
-  if (!solveRungs(rungs, gap, model.effectiveModulus, law.cells, segment, segment + 1)) {
-    view.contact.trueGap = nullptr;
-    ++fallbacks;
+  if (!rungs.failed(segment) && !rungs.failed(segment + 1)) {
+    const int before = std::popcount(rungs.solved);
+    const auto solve = [&](const PairGap& gap) { solveRungs(rungs, gap, model.effectiveModulus, law.cells, segment, segment + 1); };
+    if (cached) {
+      const CurvatureCache& c = s.curvatureCache[k];
+      solve(PairGap::touchingAt(A, B, c.localA, c.localB, Quat(c.relative), c.majorAxisA, c.radii));
+    } else {
+      solve(PairGap({A, poseOf(p, a)}, {B, poseOf(p, b)}, g));
+    }
+    solves += std::popcount(rungs.solved) - before;
+    if (rungs.has(segment) && rungs.has(segment + 1)) return;
   }
-  solves += std::popcount(rungs.solved) - before;
+  view.contact.trueGap = nullptr;  // a rung failed on this pose: elliptic Hertz until the cache refreshes
+  ++fallbacks;
 }
 
 /// The model as a kind runs it: a round contact (pair_kind.hpp) on the circle, without curvatures.

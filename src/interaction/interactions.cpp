@@ -108,6 +108,7 @@ const std::vector<std::uint32_t>& Interactions::listActing() const {
 
 void Interactions::fitStore(const InteractionScene& scene) {
   const ContactStore wanted = emptyStore(scene);
+  for (TrueGapRungs& rungs : store_.trueGap) rungs = {};  // solved for the models that were (E*, cells)
   if (wanted.sameOptionalArrays(store_)) return;
   ContactStore fitted = wanted;
   for (std::size_t k = 0; k < store_.size(); ++k) {

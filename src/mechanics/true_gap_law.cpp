@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "sqdem/mechanics/hertz_law.hpp"
 
@@ -14,6 +16,7 @@ int TrueGapRungs::segment(double delta) const {
 }
 
 void TrueGapRungs::set(int k, double rungForce, double rungArea) {
+  if (!(rungForce > 0.0 && rungArea > 0.0)) throw std::invalid_argument("TrueGapRungs::set: a rung's force and area must be > 0");
   force[k - lowest] = rungForce;
   area[k - lowest] = rungArea;
   solved |= 1u << (k - lowest);
@@ -28,17 +31,33 @@ TrueGapLaw TrueGapLaw::read(const LawInput& in, const PairElasticity&) {
   TrueGapLaw law;
   if (in.has("cells")) {
     const double cells = in.number("cells");
-    if (!(cells >= 8.0 && cells <= 64.0) || cells != std::floor(cells)) {
-      in.fail("cells", "must be an integer in [8, 64] (cells per side of the coarse grid)");
+    if (!(cells >= fewestCells && cells <= mostCells) || cells != std::floor(cells)) {
+      in.fail("cells", "must be an integer in [" + std::to_string(fewestCells) + ", " + std::to_string(mostCells) +
+                           "] (cells per side of the coarse grid)");
     }
     law.cells = static_cast<int>(cells);
   }
   return law;
 }
 
+namespace {
+
+/// The weight of the rungs handed on: 0 (elliptic Hertz) without them or where the ones from
+/// `first` to `last` are not all solved.
+double solvedWeight(const TrueGapRungs* rungs, int first, int last) {
+  if (rungs == nullptr) return 0.0;
+  for (int k = first; k <= last; ++k) {
+    if (!rungs->has(k)) return 0.0;
+  }
+  return rungs->weight;
+}
+
+}  // namespace
+
 NormalResponse TrueGapLaw::force(const NormalContact& c, double overlap, History&) const {
   if (!(overlap > 0.0)) return {.acting = false};
-  const double w = c.trueGap != nullptr ? c.trueGap->weight : 0.0;
+  const int segment = c.trueGap != nullptr ? c.trueGap->segment(overlap) : 0;
+  const double w = solvedWeight(c.trueGap, segment, segment + 1);
   NormalResponse hertz;
   if (w < 1.0) {
     HertzLaw::History none;
@@ -46,7 +65,7 @@ NormalResponse TrueGapLaw::force(const NormalContact& c, double overlap, History
     if (w == 0.0) return hertz;
   }
   const TrueGapRungs& r = *c.trueGap;
-  const int k = r.segment(overlap), i = k - TrueGapRungs::lowest;
+  const int k = segment, i = k - TrueGapRungs::lowest;
   const double s = overlap / r.overlap(k), m = std::log2(r.force[i + 1] / r.force[i]), force = r.force[i] * std::pow(s, m);
   const double area = r.area[i] * std::pow(s, std::log2(r.area[i + 1] / r.area[i]));
   return {.force = (1.0 - w) * hertz.force + w * force,
@@ -56,7 +75,8 @@ NormalResponse TrueGapLaw::force(const NormalContact& c, double overlap, History
 
 double TrueGapLaw::energy(const NormalContact& c, double overlap) const {
   if (!(overlap > 0.0)) return 0.0;
-  const double w = c.trueGap != nullptr ? c.trueGap->weight : 0.0;
+  const int top = c.trueGap != nullptr ? c.trueGap->segment(overlap) : 0;
+  const double w = solvedWeight(c.trueGap, TrueGapRungs::lowest, top + 1);
   double hertz = 0.0;
   if (w < 1.0) {
     HertzLaw::History none;
@@ -64,7 +84,6 @@ double TrueGapLaw::energy(const NormalContact& c, double overlap) const {
     if (w == 0.0) return hertz;
   }
   const TrueGapRungs& r = *c.trueGap;
-  const int top = r.segment(overlap);
   double sum = 0.0;
   for (int k = TrueGapRungs::lowest; k <= top; ++k) {
     const int i = k - TrueGapRungs::lowest;

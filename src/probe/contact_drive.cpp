@@ -248,7 +248,7 @@ ContactDrive driveContact(const json& input, const std::string& defaultName) {
       if (type == "boundary_element") {
         curves.back().law = std::make_unique<BoundaryElementLaw>(law, where + ".law", A, B, g.start(), materials);
       } else {
-        curves.back().law = std::make_unique<TrueGapLaw>(law, where + ".law", A, B, g.start(), g.radii(), materials);
+        curves.back().law = std::make_unique<TrueGapCurveLaw>(law, where + ".law", A, B, g.start(), g.radii(), materials);
       }
     } else {
       curves.back().law = std::make_unique<DrivenLaw>(law, where + ".law", g.radii(), materials, g.meanRadiusSum());

@@ -35,7 +35,10 @@ double crossing(const PairGap& gap, double level, const Vec2& d, double guess, d
     outside *= 2.0;
     if (outside > limit) throw std::runtime_error("the true gap: the region where it is below the approach is not bounded");
   }
-  while (inside == 0.0 && outside > 1e-12 * limit && !below(0.5 * outside)) outside *= 0.5;
+  while (inside == 0.0 && !below(0.5 * outside)) {
+    outside *= 0.5;
+    if (outside < 1e-15 * limit) throw std::runtime_error("the true gap: no crossing of the approach found along a ray");
+  }
   if (inside == 0.0) inside = 0.5 * outside;
   for (int k = 0; k < 7; ++k) {
     const double middle = 0.5 * (inside + outside);
@@ -53,7 +56,7 @@ GapGrid gapRegionGrid(const PairGap& gap, double level, int cells, double margin
   }
   const double limit = 1e3 * gap.referenceLength();
   RayFrame frame{0.0, gap.quadraticAspect()};
-  double guess = std::sqrt(2.0 * gap.majorRadius() * level);
+  double guess = std::max(std::sqrt(2.0 * gap.majorRadius() * level), 1e-9 * gap.referenceLength());
   std::array<Vec2, rays> crossings;
   for (int pass = 0; pass < 8; ++pass) {
     Vec2 mean = Vec2::Zero();

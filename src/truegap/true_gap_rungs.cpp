@@ -18,8 +18,10 @@ bool solveRungs(TrueGapRungs& rungs, const PairGap& gap, double effectiveModulus
     if (rungs.has(k)) continue;
     try {
       const HalfspaceContact c = gapContact(gap, rungs.overlap(k), effectiveModulus, cells);
+      if (!(c.force > 0.0 && c.area > 0.0)) throw std::runtime_error("no cell in contact");
       rungs.set(k, c.force, c.area);
-    } catch (const std::runtime_error&) {
+    } catch (const std::exception&) {  // (inside the engine's parallel loops: nothing may escape)
+      rungs.fail(k);
       return false;
     }
   }

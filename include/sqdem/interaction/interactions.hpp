@@ -165,7 +165,8 @@ class Interactions {
   std::size_t setCandidates(const std::vector<CandidateKey>& candidates, const InteractionScene& scene,
                      const std::vector<std::uint32_t>& ghostOwner);
   /// Keeps the store's optional arrays (rolling, curvature cache) to what the scene's contact
-  /// models need, after a model changed: arrays added fresh, arrays no longer needed dropped.
+  /// models need, after a model changed: arrays added fresh, arrays no longer needed dropped;
+  /// the true-gap law's rungs forgotten (solved for the former models' E* and cells).
   void fitStore(const InteractionScene& scene);
   /// Drops every pair's separation bound (ContactStore::separation): after the particles were
   /// moved other than by a step, the next computation solves each pair again.

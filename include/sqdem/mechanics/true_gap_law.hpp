@@ -35,6 +35,7 @@ struct TrueGapRungs {
   std::array<double, count> force{};  ///< (N) at rung k: force[k - lowest]
   std::array<double, count> area{};   ///< (m^2)
   std::uint32_t solved = 0;           ///< bit k - lowest: rung k solved
+  std::uint32_t failures = 0;         ///< bit k - lowest: rung k's contact failed on this pose
   double length = 0.0;                ///< R_ref (m)
   double weight = 0.0;                ///< w of the blend (above)
 
@@ -43,7 +44,12 @@ struct TrueGapRungs {
   /// the ladder).
   int segment(double overlap) const;
   bool has(int k) const { return (solved >> (k - lowest)) & 1u; }
+  bool failed(int k) const { return (failures >> (k - lowest)) & 1u; }
+  /// Rung k solved: force (N) and area (m^2) > 0.
   void set(int k, double rungForce, double rungArea);
+  void fail(int k) { failures |= 1u << (k - lowest); }
+  /// Every rung unsolved (a new pose), the ladder kept.
+  void forget() { solved = failures = 0; }
 };
 
 /// The weight w of the blend for the bodies' exponents n1, n2 of A and of B.
@@ -51,15 +57,17 @@ double trueGapWeight(double n1A, double n2A, double n1B, double n2B);
 
 struct TrueGapLaw {
   static constexpr std::array<std::string_view, 1> keys{"cells"};
-  int cells = 16;  ///< of the coarse grid, per side (8-64)
+  static constexpr int fewestCells = 8, mostCells = 64;
+  int cells = 16;  ///< of the coarse grid, per side (fewestCells ... mostCells)
 
   struct History {};
   static TrueGapLaw read(const LawInput& in, const PairElasticity& pair);
 
   /// c.trueGap holds the rungs around the overlap (unless w = 0); c's radii, factors and E* are
-  /// elliptic Hertz's.
+  /// elliptic Hertz's. Without them (none handed on, or not solved) elliptic Hertz.
   NormalResponse force(const NormalContact& c, double overlap, History&) const;
-  /// The integral of the force from 0 (J): needs every rung up to the overlap's segment.
+  /// The integral of the force from 0 (J): needs every rung up to the overlap's segment, elliptic
+  /// Hertz's 2/5 F delta without them.
   double energy(const NormalContact& c, double overlap) const;
   double range(const History&) const { return 0.0; }
   double reach(double, double) const { return 0.0; }

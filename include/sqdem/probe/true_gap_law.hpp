@@ -16,14 +16,14 @@ class TrueGapCurve;
 
 namespace sqdem::probe {
 
-class TrueGapLaw final : public CurveLaw {
+class TrueGapCurveLaw final : public CurveLaw {
  public:
   /// `law` {"type": "true_gap", "cells": 8-64 (default 16)}; the particles, the detector's contact
   /// at their given poses and its relative radii (capped as the curve's geometry says: the
   /// elliptic Hertz blended in near ellipsoids).
-  TrueGapLaw(const json& law, const std::string& where, const Particle& A, const Particle& B, const ContactGeometry& contact,
+  TrueGapCurveLaw(const json& law, const std::string& where, const Particle& A, const Particle& B, const ContactGeometry& contact,
              const RelativeRadii& radii, const ContactMaterials& materials);
-  ~TrueGapLaw() override;
+  ~TrueGapCurveLaw() override;
 
   LawSample at(double overlap) override;
   json constants() const override;

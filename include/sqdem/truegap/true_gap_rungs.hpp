@@ -10,8 +10,9 @@ namespace sqdem {
 /// A ladder for the pair: R_ref and the weight of its exponents, no rung solved.
 TrueGapRungs trueGapLadder(const Superquadric& A, const Superquadric& B);
 
-/// Solves rungs first ... last of the ladder not yet solved, with E* (Pa). False, leaving the
-/// rest unsolved, when a contact fails (pair_contact.hpp's reasons).
+/// Solves rungs first ... last of the ladder not yet solved, with E* (Pa). False, the rung marked
+/// failed and the rest left unsolved, when a contact fails (pair_contact.hpp's reasons, or no
+/// cell in contact).
 bool solveRungs(TrueGapRungs& rungs, const PairGap& gap, double effectiveModulus, int cells, int first, int last);
 
 }  // namespace sqdem
