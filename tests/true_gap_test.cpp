@@ -148,26 +148,31 @@ TEST(TrueGapLaw, ForceDerivesFromTheEnergy) {
   }
 }
 
-// A block (004 Table 1's shape, n = 6) rolled on a sphere from a face (0 degrees) onto an edge
-// (45 degrees) at an overlap of 1e-3 R_ref: the law follows the reference along the whole path,
-// through the rounding of the face into the edge, and never jumps by more than it does.
+// A block (004 Table 1's shape, n = 6) rolled from a face (0 degrees) onto an edge (45 degrees)
+// at an overlap of 1e-3 R_ref, on a sphere (a Hertzian contact all along) and on another block
+// (its edge on the face: 1.95 x elliptic Hertz's force aligned, 1.05 x after 0.5 degrees): the
+// law follows the reference along the whole path, through the rounding of the face into the edge,
+// and never jumps by more than it does.
 TEST(TrueGapLaw, RollingAFaceOntoAnEdgeIsContinuous) {
-  double lastLaw = 0.0, lastReference = 0.0;
-  for (int step = 0; step <= 18; ++step) {
-    PosedPair p;
-    p.A = Superquadric::ellipsoid(3.0, 3.0, 3.0);
-    p.B = Superquadric(1.0, 1.0, 2.0, 6.0, 6.0);
-    const double angle = 2.5 * step * std::numbers::pi / 180.0;
-    p.poseB.orientation = Quat(Eigen::AngleAxisd(angle, Vec3::UnitY()));
-    ASSERT_TRUE(testing::slideToOverlap(p, Vec3::UnitZ(), 1e-9 * referenceVolumeRadius(p.A, p.B)));
-    TrueGapCurve curve = curveOf(p);
-    const double delta = 1e-3 * referenceVolumeRadius(p.A, p.B);
-    const double law = curve.at(delta).force, reference = boundaryElementContact({p.A, p.poseA}, {p.B, p.poseB}, p.contact, delta, 1.0).force;
-    std::printf("%4.1f degrees: F_ref %.6e N, F/F_ref - 1 = %+.4f\n", 2.5 * step, reference, law / reference - 1.0);
-    EXPECT_LT(std::abs(law / reference - 1.0), 0.01);
-    if (step > 0) EXPECT_LT(std::abs(law / lastLaw - reference / lastReference), 0.01);
-    lastLaw = law;
-    lastReference = reference;
+  for (const bool onBlock : {false, true}) {
+    double lastLaw = 0.0, lastReference = 0.0;
+    for (const double degrees : {0.0, 0.1, 0.25, 0.5, 1.0, 2.0, 3.5, 5.0, 7.5, 10.0, 15.0, 20.0, 25.0, 30.0, 35.0, 40.0, 45.0}) {
+      PosedPair p;
+      p.A = onBlock ? Superquadric(1.0, 1.0, 2.0, 6.0, 6.0) : Superquadric::ellipsoid(3.0, 3.0, 3.0);
+      p.B = Superquadric(1.0, 1.0, 2.0, 6.0, 6.0);
+      if (onBlock) p.poseA.orientation = Quat(Eigen::AngleAxisd(0.3, Vec3::UnitX()));  // its edge along y, under B's face
+      p.poseB.orientation = Quat(Eigen::AngleAxisd(degrees * std::numbers::pi / 180.0, Vec3::UnitY()));
+      ASSERT_TRUE(testing::slideToOverlap(p, Vec3::UnitZ(), 1e-9 * referenceVolumeRadius(p.A, p.B)));
+      TrueGapCurve curve = curveOf(p);
+      const double delta = 1e-3 * referenceVolumeRadius(p.A, p.B);
+      const double law = curve.at(delta).force, reference = boundaryElementContact({p.A, p.poseA}, {p.B, p.poseB}, p.contact, delta, 1.0).force;
+      std::printf("%s, %4.2f degrees: F_ref %.6e N, F/F_ref - 1 = %+.4f\n", onBlock ? "on a block" : "on a sphere", degrees, reference,
+                  law / reference - 1.0);
+      EXPECT_LT(std::abs(law / reference - 1.0), 0.01);
+      if (degrees > 0.0) EXPECT_LT(std::abs(law / lastLaw - reference / lastReference), 0.01);
+      lastLaw = law;
+      lastReference = reference;
+    }
   }
 }
 

@@ -120,6 +120,7 @@ double eccentricitySquaredExact(double ratio) {
   double lo = 1e-3 * (1.0 - ratio);
   double hi = 1.0 - std::pow(ratio, 4.0 / 3.0) / 16.0;
   while (psi(lo) >= 0.0 && lo > 1e-300) lo *= 1e-3;
+  if (psi(lo) >= 0.0) return 0.0;  // the ratio 1 to psi's rounding (1 - ratio ~ 1e-15): a circle
   while (psi(hi) <= 0.0 && hi < 1.0) hi = 1.0 - (1.0 - hi) * 1e-2;
   std::uintmax_t maxIterations = 200;
   const auto [a, b] = boost::math::tools::toms748_solve(
