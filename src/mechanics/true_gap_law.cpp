@@ -58,12 +58,9 @@ NormalResponse TrueGapLaw::force(const NormalContact& c, double overlap, History
   if (!(overlap > 0.0)) return {.acting = false};
   const int segment = c.trueGap != nullptr ? c.trueGap->segment(overlap) : 0;
   const double w = solvedWeight(c.trueGap, segment, segment + 1);
-  NormalResponse hertz;
-  if (w < 1.0) {
-    HertzLaw::History none;
-    hertz = HertzLaw{}.force(c, overlap, none);
-    if (w == 0.0) return hertz;
-  }
+  HertzLaw::History none;
+  const NormalResponse hertz = w < 1.0 ? HertzLaw{}.force(c, overlap, none) : NormalResponse{};
+  if (w == 0.0) return hertz;
   const TrueGapRungs& r = *c.trueGap;
   const int k = segment, i = k - TrueGapRungs::lowest;
   const double s = overlap / r.overlap(k), m = std::log2(r.force[i + 1] / r.force[i]), force = r.force[i] * std::pow(s, m);
@@ -77,12 +74,9 @@ double TrueGapLaw::energy(const NormalContact& c, double overlap) const {
   if (!(overlap > 0.0)) return 0.0;
   const int top = c.trueGap != nullptr ? c.trueGap->segment(overlap) : 0;
   const double w = solvedWeight(c.trueGap, TrueGapRungs::lowest, top + 1);
-  double hertz = 0.0;
-  if (w < 1.0) {
-    HertzLaw::History none;
-    hertz = 0.4 * HertzLaw{}.force(c, overlap, none).force * overlap;  // 2/5 F delta (hertz_law.hpp)
-    if (w == 0.0) return hertz;
-  }
+  HertzLaw::History none;
+  const double hertz = w < 1.0 ? 0.4 * HertzLaw{}.force(c, overlap, none).force * overlap : 0.0;  // 2/5 F delta (hertz_law.hpp)
+  if (w == 0.0) return hertz;
   const TrueGapRungs& r = *c.trueGap;
   double sum = 0.0;
   for (int k = TrueGapRungs::lowest; k <= top; ++k) {

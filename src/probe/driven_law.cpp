@@ -1,49 +1,11 @@
 #include "sqdem/probe/driven_law.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
+#include "sqdem/probe/json_law_input.hpp"
+
 namespace sqdem::probe {
-namespace {
-
-/// A law's keys in a JSON object (law_input.hpp); "type" and "eccentricity" are the driver's.
-class JsonLawInput final : public LawInput {
- public:
-  JsonLawInput(const json& object, std::string where, std::vector<std::string_view> ownKeys)
-      : object_(object), where_(std::move(where)), ownKeys_(std::move(ownKeys)) {}
-
-  bool has(std::string_view key) const override { return object_.contains(key); }
-  double number(std::string_view key) const override { return probe::number(object_, std::string(key), where_); }
-  bool flag(std::string_view key) const override {
-    const json& v = object_.at(key);
-    if (!v.is_boolean()) fail(key, "must be true or false");
-    return v.get<bool>();
-  }
-  std::unique_ptr<LawInput> child(std::string_view key) const override {
-    const json& v = object_.at(key);
-    if (!v.is_object()) fail(key, "must be an object");
-    return std::make_unique<JsonLawInput>(v, where_ + "." + std::string(key), std::vector<std::string_view>{});
-  }
-  std::vector<std::string> keys() const override {
-    std::vector<std::string> out;
-    for (const auto& [key, value] : object_.items()) {
-      if (std::find(ownKeys_.begin(), ownKeys_.end(), key) == ownKeys_.end()) out.push_back(key);
-    }
-    return out;
-  }
-  std::string ownKeys() const override { return joinKeys(ownKeys_); }
-  void raise(std::string_view key, const std::string& message) const override {
-    throw InputError(where_ + ": " + (key.empty() ? "" : "'" + std::string(key) + "' ") + message);
-  }
-
- private:
-  const json& object_;
-  std::string where_;
-  std::vector<std::string_view> ownKeys_;
-};
-
-}  // namespace
 
 double ContactMaterials::effectiveModulus() const {
   return sqdem::effectiveModulus(youngsA, poissonA, youngsB, poissonB);

@@ -1,20 +1,19 @@
 #include "sqdem/probe/true_gap_law.hpp"
 
-#include <cmath>
+#include <variant>
 
+#include "sqdem/probe/json_law_input.hpp"
 #include "sqdem/truegap/true_gap_curve.hpp"
 
 namespace sqdem::probe {
 
 TrueGapCurveLaw::TrueGapCurveLaw(const json& law, const std::string& where, const Particle& A, const Particle& B, const ContactGeometry& contact,
                        const RelativeRadii& radii, const ContactMaterials& materials) {
-  rejectUnknownKeys(law, {"type", "cells"}, where);
-  const double cells = number(law, "cells", where, TrueGapLaw{}.cells);
-  if (!(cells >= TrueGapLaw::fewestCells && cells <= TrueGapLaw::mostCells) || cells != std::floor(cells)) {
-    throw InputError(where + ": 'cells' (per side of the coarse grid) must be an integer in [" + std::to_string(TrueGapLaw::fewestCells) +
-                     ", " + std::to_string(TrueGapLaw::mostCells) + "]");
-  }
-  cells_ = static_cast<int>(cells);
+  if (!law.is_object()) throw InputError(where + " must be an object");
+  // The registry reads and checks the law's keys (law_registry.hpp), as for the engine's scenes.
+  const JsonLawInput input(law, where, {"type"});
+  const PairElasticity pair{.effectiveModulus = materials.effectiveModulus(), .poissonRatio = materials.meanPoisson()};
+  cells_ = std::get<TrueGapLaw>(readNormalLaw(normalLaw("true_gap", input, "type"), input, pair)).cells;
   curve_ = std::make_unique<TrueGapCurve>(PairBody{A.shape, A.pose}, PairBody{B.shape, B.pose}, contact, radii,
                                           materials.effectiveModulus(), cells_);
 }

@@ -54,15 +54,21 @@ fi
 reference='"material": {"youngs_modulus": 1e9, "poisson_ratio": 0.3}, "path": {"points": [0, 1e-8]}, "curves": [{"label": "c",'
 pair='{"particles": [{"centre": [0, 0, 0], "quaternion": [1, 0, 0, 0], "a": 1e-6, "b": 1e-6, "c": 1e-6, "n1": 2, "n2": 2},
   {"centre": [0, 0, 2.1e-6], "quaternion": [1, 0, 0, 0], "a": 1e-6, "b": 1e-6, "c": 1e-6, "n1": 2, "n2": 2}]}'
+# boundary_element words its own message; true_gap's is the law registry's (TrueGapLaw::read).
 for law in "boundary_element 16 512 8 1000 64.5" "true_gap 8 64 4 100 16.5"; do
   set -- $law
   type=$1 low=$2 high=$3
+  if [ "$type" = boundary_element ]; then
+    cells_message="'cells' .per side of the grid. must be an integer in \[$low, $high\]"
+  else
+    cells_message="'cells' must be an integer in \[$low, $high\] .cells per side of the coarse grid."
+  fi
   printf '{%s "geometry": {"radii": [1e-6, 1e-6]}, "law": {"type": "%s"}}]}' "$reference" "$type" > "$scratch/reference.json"
   expect_error "$type on radii" 1 "curves\[0\].law: $type needs the curve's geometry as 'particles'" \
     "$sqdem" contact "$scratch/reference.json" --out "$out"
   for cells in $4 $5 $6; do
     printf '{%s "geometry": %s, "law": {"type": "%s", "cells": %s}}]}' "$reference" "$pair" "$type" "$cells" > "$scratch/reference.json"
-    expect_error "$type cells $cells" 1 "curves\[0\].law: 'cells' .per side of the .*grid. must be an integer in \[$low, $high\]" \
+    expect_error "$type cells $cells" 1 "curves\[0\].law: $cells_message" \
       "$sqdem" contact "$scratch/reference.json" --out "$out"
   done
   printf '{%s "geometry": %s, "law": {"type": "%s"}}], "tangential": {"points": [0, 1e-9], "friction": 0.3}}' \
@@ -70,5 +76,9 @@ for law in "boundary_element 16 512 8 1000 64.5" "true_gap 8 64 4 100 16.5"; do
   expect_error "$type tangential" 1 "curve 'c' is a law of the true gap .boundary_element or true_gap: normal only." \
     "$sqdem" contact "$scratch/reference.json" --out "$out"
 done
+# A key the true-gap law does not take (a driver key of the other laws, here) is refused by the registry.
+printf '{%s "geometry": %s, "law": {"type": "true_gap", "eccentricity": "exact"}}]}' "$reference" "$pair" > "$scratch/reference.json"
+expect_error "true_gap unknown key" 1 "curves\[0\].law: 'eccentricity' unknown key \(allowed: type, and for true_gap: cells\)" \
+  "$sqdem" contact "$scratch/reference.json" --out "$out"
 check "nothing written for the refused references" test ! -e "$out"
 finish
