@@ -5,6 +5,13 @@
 #include "sqdem/truegap/pair_contact.hpp"
 
 namespace sqdem {
+namespace {
+
+/// The relative pressure change at which a rung's solve stops: its force then within ~1e-7 of the
+/// converged one, far inside the coarse grid's error (~2e-3); 40 % fewer iterations than 1e-10.
+constexpr double rungTolerance = 1e-6;
+
+}  // namespace
 
 TrueGapRungs trueGapLadder(const Superquadric& A, const Superquadric& B) {
   TrueGapRungs rungs;
@@ -17,7 +24,7 @@ bool solveRungs(TrueGapRungs& rungs, const PairGap& gap, double effectiveModulus
   for (int k = first; k <= last; ++k) {
     if (rungs.has(k)) continue;
     try {
-      const HalfspaceContact c = gapContact(gap, rungs.overlap(k), effectiveModulus, cells);
+      const HalfspaceContact c = gapContact(gap, rungs.overlap(k), effectiveModulus, cells, rungTolerance);
       if (!(c.force > 0.0 && c.area > 0.0)) throw std::runtime_error("no cell in contact");
       rungs.set(k, c.force, c.area);
     } catch (const std::exception&) {  // (inside the engine's parallel loops: nothing may escape)

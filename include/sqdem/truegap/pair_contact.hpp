@@ -13,8 +13,9 @@ namespace sqdem {
 /// The contact at the approach delta (m) for the effective modulus E* (Pa) on cells x cells: force
 /// (N) and area (m^2). The grid's margin grows (4 %, 20 %, 50 % of the region's extent) while the
 /// pressure reaches its edge. Throws std::runtime_error when the solver does not converge or the
-/// pressure reaches the widest grid's edge.
-HalfspaceContact gapContact(const PairGap& gap, double approach, double effectiveModulus, int cells);
+/// pressure reaches the widest grid's edge. `tolerance`: the solver's relative pressure change at
+/// convergence (halfspace_contact.hpp).
+HalfspaceContact gapContact(const PairGap& gap, double approach, double effectiveModulus, int cells, double tolerance = 1e-10);
 
 /// The same for two posed bodies and the detector's contact between them.
 HalfspaceContact boundaryElementContact(const PairBody& A, const PairBody& B, const ContactGeometry& contact, double approach,
