@@ -18,7 +18,7 @@ namespace {
 /// (di, dj), (di + nx - 1) + (2 nx - 1) (dj + ny - 1). Compiled also for x86-64-v3 (four lanes
 /// instead of two) and chosen at run time: each cell's sum is the same sequence of operations
 /// either way, the same bits.
-#if defined(__x86_64__)
+#if defined(__x86_64__) && defined(__GLIBC__) && !defined(__clang__)  // an ifunc: GCC on glibc
 [[gnu::target_clones("arch=x86-64-v3", "default")]]
 #endif
 void directConvolution(const double* kernel, const double* p, double* u, int nx, int ny) {
@@ -221,16 +221,15 @@ HalfspaceContact HalfspaceSolver::solve(double approach, double load, double tol
     }
     const double tau = gt / rt;
     previous = p;
-    for (std::size_t k = 0; k < n; ++k) {
-      if (previous[k] > 0.0) p[k] = std::max(previous[k] - tau * t[k], 0.0);
-    }
     conjugate = true;
     for (std::size_t k = 0; k < n; ++k) {
+      const double stepped = previous[k] - tau * t[k];  // t = 0 off the contact
+      p[k] = previous[k] > 0.0 ? std::max(stepped, 0.0) : 0.0;
       if (p[k] == 0.0 && g[k] < 0.0) {  // interpenetrating without pressure
         p[k] = -tau * g[k];
         conjugate = false;
       }
-      correction[k] = p[k] - (previous[k] - tau * t[k]);  // t = 0 off the contact
+      correction[k] = p[k] - stepped;  // 0 but where a cell was released or taken in
     }
     for (std::size_t k = 0; k < n; ++k) u[k] -= tau * Kt[k];
     if (std::any_of(correction.begin(), correction.end(), [](double v) { return v != 0.0; })) {
@@ -264,6 +263,7 @@ HalfspaceContact HalfspaceSolver::solve(double approach, double load, double tol
   result.force = cell * total;
   result.area = cell * static_cast<double>(contact);
   if (byLoad) {  // the approach: the mean of u + h over the contact, where the gap closes
+    u = convolution_->apply(p);  // afresh, without the steps' rounding
     for (std::size_t k = 0; k < n; ++k) g[k] = u[k] + h[k];
     result.approach = meanOverContact(g);
   }

@@ -30,7 +30,7 @@ DrivenLaw::DrivenLaw(const json& law, const std::string& where, const RelativeRa
                        "take: it drives a law on the pair's relative radii (given, or the particles' curvatures); for "
                        "the volume spheres use elliptic_hertz with radii [R*, R*], R* = rA rB / (rA + rB)");
   }
-  const PairElasticity pair{.effectiveModulus = materials.effectiveModulus(), .poissonRatio = materials.meanPoisson()};
+  const PairElasticity pair = materials.elasticity();
   law_ = readNormalLaw(entry, input, pair);
   adhesive_ = sqdem::adhesive(law_);
   contact_ = {.radii = radii, .factors = hertzFactors(radii.ratio(), m), .effectiveModulus = pair.effectiveModulus,

@@ -9,10 +9,9 @@ namespace sqdem::probe {
 
 TrueGapCurveLaw::TrueGapCurveLaw(const json& law, const std::string& where, const Particle& A, const Particle& B, const ContactGeometry& contact,
                        const RelativeRadii& radii, const ContactMaterials& materials) {
-  if (!law.is_object()) throw InputError(where + " must be an object");
   // The registry reads and checks the law's keys (law_registry.hpp), as for the engine's scenes.
   const JsonLawInput input(law, where, {"type"});
-  const PairElasticity pair{.effectiveModulus = materials.effectiveModulus(), .poissonRatio = materials.meanPoisson()};
+  const PairElasticity pair = materials.elasticity();
   cells_ = std::get<TrueGapLaw>(readNormalLaw(normalLaw("true_gap", input, "type"), input, pair)).cells;
   curve_ = std::make_unique<TrueGapCurve>(PairBody{A.shape, A.pose}, PairBody{B.shape, B.pose}, contact, radii,
                                           materials.effectiveModulus(), cells_);

@@ -27,33 +27,34 @@ struct RayFrame {
 };
 
 /// rho where the gap along rho d first reaches the level (the gap convex and below it at 0), the
-/// point returned at or beyond it, its gap within 2 % of it.
+/// point returned at or beyond it, its gap within 2 % of it (rho within 1 % for m >= 2).
 double crossing(const PairGap& gap, double level, const Vec2& d, double guess, double limit) {
   // A bracket [inside, outside] kept about the crossing; each step takes the crossing of the
   // power law through the last two points (log g linear in log rho: one step for a gap c rho^m),
-  // or the bracket's geometric middle where that leaves it. Done when the outside point's gap is
-  // within 2 % above the level (rho within 1 %: m >= 2), the bracket within 0.1 %.
+  // or the bracket's geometric middle where that leaves it or where two steps did not halve it.
   const auto at = [&](double rho) { return gap(rho * d.x(), rho * d.y()); };
   double inside = 0.0, outside = std::numeric_limits<double>::infinity(), gOutside = 0.0;
-  double rho = guess, g = at(rho), lastRho = 0.0, lastG = 0.0;
-  for (int step = 0; step < 60; ++step) {
+  double rho = guess, g = at(rho), lastRho = 0.0, lastG = 0.0, widthBefore = 0.0, width = 0.0;
+  for (int step = 0; step < 100; ++step) {
     if (g < level) inside = rho;
     else outside = rho, gOutside = g;
-    if (outside < limit && gOutside <= 1.02 * level) return outside;
-    if (outside <= 1.001 * inside) return outside;
+    if (inside >= limit) throw std::runtime_error("the true gap: the region where it is below the approach is not bounded");
+    if (std::isfinite(outside) && (gOutside <= 1.02 * level || outside <= 1.001 * inside)) return outside;
     double m = 2.0, next = 0.0;  // Hertz's exponent until two points give one
     if (lastG > 0.0 && std::isfinite(lastG) && std::isfinite(g) && g != lastG) m = std::log(g / lastG) / std::log(rho / lastRho);
     if (std::isfinite(g) && g > 0.0 && m > 0.0) next = rho * std::pow(1.01 * level / g, 1.0 / m);
-    if (!(next > inside && next < outside)) {  // the power law's step left the bracket
+    const double bracket = inside > 0.0 && std::isfinite(outside) ? std::log(outside / inside) : 0.0;
+    const bool slow = bracket > 0.0 && widthBefore > 0.0 && bracket > 0.5 * widthBefore;
+    widthBefore = width, width = bracket;
+    if (slow || !(next > inside && next < outside)) {  // the power law's step is slow, or left the bracket
       next = inside == 0.0 ? 0.5 * outside : std::isinf(outside) ? 2.0 * inside : std::sqrt(inside * outside);
     }
-    if (std::isinf(outside)) next = std::min(next, 4.0 * inside);  // no bracket yet: at most 4x out
-    if (next > limit) throw std::runtime_error("the true gap: the region where it is below the approach is not bounded");
+    if (std::isinf(outside)) next = std::min({next, 4.0 * inside, limit});  // no bracket yet: at most 4x out
     if (next < 1e-15 * limit) throw std::runtime_error("the true gap: no crossing of the approach found along a ray");
     lastRho = rho, lastG = g;
     rho = next, g = at(rho);
   }
-  throw std::runtime_error("the true gap: no crossing of the approach found along a ray in 60 steps");
+  return outside;  // not reached: the bracket halves at least every other step
 }
 
 }  // namespace

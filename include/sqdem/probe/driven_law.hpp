@@ -25,6 +25,8 @@ struct ContactMaterials {
   double effectiveModulus() const;       ///< E* (Pa)
   double effectiveShearModulus() const;  ///< G* = ((2 - nuA)/GA + (2 - nuB)/GB)^-1 (Pa)
   double meanPoisson() const { return 0.5 * (poissonA + poissonB); }
+  /// What the law registry reads a law with (law_registry.hpp).
+  PairElasticity elasticity() const { return {.effectiveModulus = effectiveModulus(), .poissonRatio = meanPoisson()}; }
 };
 
 /// What the driver asks of a curve's law: a registered law (DrivenLaw) or the boundary-element
