@@ -18,7 +18,8 @@ double surfaceFarthestAlong(const Superquadric& shape, const Pose& pose, const V
     if (slope <= 0.0) return -std::numeric_limits<double>::infinity();
     const double step = (g.value - 1.0) / slope;
     t -= step;
-    if (step <= 1e-8 * shape.boundingRadius()) break;  // the next step (quadratic) below ~1e-16 R^2 / (the line's curvature radius)
+    // Quadratic convergence: the next step would be below ~1e-16 R^2 / (the line's curvature radius).
+    if (step <= 1e-8 * shape.boundingRadius()) break;
   }
   return t;
 }

@@ -3,9 +3,8 @@
 // gap (pair_gap.hpp) is below the approach, convex since the gap is. Found along 16 rays from
 // the contact, each ray's crossing of the level by power-law steps kept in a bracket, the rays
 // spread evenly over an ellipse that is refined to the crossings' principal axes and aspect
-// until both settle; thin
-// regions (an edge on a face: aspects of 1e-3) are followed as well as round ones
-// (docs/contact_laws.md, "The true gap").
+// until both settle; thin regions (an edge on a face: aspects of 1e-3) are followed as well as
+// round ones (docs/contact_laws.md, "The true gap").
 
 #include "sqdem/halfspace/halfspace_contact.hpp"
 #include "sqdem/truegap/pair_gap.hpp"
