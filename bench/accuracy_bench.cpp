@@ -3,16 +3,19 @@
 // From a settled bed (the scene's stages, run once with the default settings), every accuracy
 // knob of the engine is varied alone: detector tolerance, warm starts, e^2 (exact, tabulated,
 // explicit), the curvature cache tolerance, the full elliptic law vs Hertz on volume-equivalent
-// spheres, the time step. Each variant runs `steps` steps of the bed (1 thread; the fastest of
-// three identical runs is timed) and is measured:
+// spheres, the time step; then the true-gap law (docs/contact_laws.md) at its cache tolerances and
+// grids. Each variant runs `steps` steps of the bed (1 thread; the fastest of three identical runs
+// is timed) and is measured:
 //   cost    wall time per particle-step, and per particle and simulated millisecond (the time step
 //           changes how many steps a protocol needs);
 //   force   contact force error on the same configuration: a copy of the variant's world before
 //           its last step takes that step with the reference settings (tightest of every knob),
 //           and the two forces of every contact are compared: |F - F_ref| / |F_ref|, median, 99th
-//           percentile, max (a contact only one of them has counts 1);
+//           percentile, max (a contact only one of them has counts 1); the reference keeps the
+//           variant's law (true_gap's at its default 16 cells);
 //   bulk    drift of solid fraction, mean coordination and mean stress -tr(sigma)/3 after the run
-//           against the reference run's.
+//           against the reference run's: for true_gap the run at curvature tolerance 1e-4, the
+//           tightest that runs in minutes (at 0 each contact-step solves two rungs of ~1 ms).
 // usage: bench_accuracy <bed.yaml> [steps, default 1000] [table.tsv]
 //   (bench/scenes/bed_ellipsoid.yaml, bed_sq6.yaml; bench/run_accuracy.sh runs both and plots)
 
@@ -28,6 +31,7 @@
 #include <string>
 #include <vector>
 
+#include "sqdem/mechanics/true_gap_law.hpp"
 #include "sqdem/scene/build_world.hpp"
 #include "sqdem/scene/scene_loader.hpp"
 #include "sqdem/world/packing_measures.hpp"
@@ -45,6 +49,7 @@ struct Settings {
   double curvatureTolerance = ContactModel{}.curvatureTolerance;
   bool fullLaw = true;
   double timeStepFactor = 1.0;
+  int trueGapCells = 0;  ///< the normal law true_gap on this grid; 0: the scene's law
 };
 
 /// Timed runs per variant: this machine's timings scatter by ±30 % from run to run.
@@ -65,6 +70,7 @@ void apply(const Settings& s, World& world, double baseTimeStep) {
       m.curvatureTolerance = s.curvatureTolerance;
       m.curvatures = s.fullLaw;
       m.tangential.elliptic = s.fullLaw;
+      if (s.trueGapCells > 0) m.normal = TrueGapLaw{s.trueGapCells};
       world.setContactModel(a, b, m);
     }
   }
@@ -113,12 +119,17 @@ int main(int argc, char** argv) {
   for (long long s = 0; s < settleSteps; ++s) world.step();
   const World settled = world;
 
-  Settings reference;
-  reference.detectorTolerance = 1e-12;
-  reference.eccentricity = EccentricityMethod::Exact;
-  reference.curvatureTolerance = 0.0;
+  // The reference of a variant: the tightest of every knob, the variant's law kept.
+  const auto referenceOf = [](const Settings& s) {
+    Settings reference;
+    reference.detectorTolerance = 1e-12;
+    reference.eccentricity = EccentricityMethod::Exact;
+    reference.curvatureTolerance = 0.0;
+    reference.trueGapCells = s.trueGapCells > 0 ? TrueGapLaw{}.cells : 0;
+    return reference;
+  };
   const Settings defaults;
-  std::vector<Variant> variants{{"reference (tightest)", reference}, {"default", defaults}};
+  std::vector<Variant> variants{{"reference (tightest)", referenceOf(defaults)}, {"default", defaults}};
   const auto vary = [&](const std::string& name, auto change) {
     Settings s = defaults;
     change(s);
@@ -136,16 +147,30 @@ int main(int argc, char** argv) {
   for (const double t : {0.0, 1e-6, 1e-4, 1e-3, 1e-2}) vary(named("curvature tolerance ", t), [&](Settings& s) { s.curvatureTolerance = t; });
   vary("volume-sphere Hertz", [](Settings& s) { s.fullLaw = false; });
   for (const double f : {0.5, 2.0}) vary(named("time step x", f), [&](Settings& s) { s.timeStepFactor = f; });
+  // The true-gap law: its first variant is its bulk reference (above).
+  const std::size_t firstTrueGap = variants.size();
+  for (const int cells : {16, 8}) {
+    for (const double t : {1e-4, 1e-3, 1e-2}) {
+      if (cells != TrueGapLaw{}.cells && t == 1e-4) continue;
+      char name[64];
+      std::snprintf(name, sizeof name, "true_gap %d cells, curv. %g", cells, t);
+      vary(name, [&](Settings& s) {
+        s.trueGapCells = cells;
+        s.curvatureTolerance = t;
+      });
+    }
+  }
 
   std::FILE* tsv = argc > 3 ? std::fopen(argv[3], "w") : nullptr;
   if (tsv) {
     std::fprintf(tsv, "variant\tus_per_particle_step\tus_per_particle_per_ms\tforce_err_median\tforce_err_p99\tforce_err_max"
                       "\tdrift_solid_fraction\tdrift_coordination\tdrift_pressure_rel\n");
   }
-  std::printf("%-26s %12s %12s %10s %10s %10s %12s %12s %12s\n", "variant", "us/p-step", "us/p/ms", "F err med",
+  std::printf("%-32s %12s %12s %10s %10s %10s %12s %12s %12s\n", "variant", "us/p-step", "us/p/ms", "F err med",
               "F err p99", "F err max", "d(phi)", "d(Z)", "d(p)/p");
   Bulk referenceBulk{};
-  for (const Variant& v : variants) {
+  for (std::size_t i = 0; i < variants.size(); ++i) {
+    const Variant& v = variants[i];
     // The same (deterministic) run timingRepeats times; its cost is the fastest of them.
     const int n = static_cast<int>(std::lround(steps / v.settings.timeStepFactor));
     World w = settled;
@@ -159,7 +184,7 @@ int main(int argc, char** argv) {
     }
     World check = w;
     w.step();
-    apply(reference, check, dt);
+    apply(referenceOf(v.settings), check, dt);
     check.setTimeStep(w.timeStep());  // the same step: only the force computation differs
     check.step();
     const auto mine = contactForces(w), exact = contactForces(check);
@@ -172,12 +197,12 @@ int main(int argc, char** argv) {
       if (!exact.count(key)) errors.push_back(1.0);
     }
     const Bulk b = bulk(w);
-    if (&v == &variants.front()) referenceBulk = b;
+    if (i == 0 || i == firstTrueGap) referenceBulk = b;
     const double perStep = 1e6 * seconds / (static_cast<double>(n - 1) * w.particles().size());
     const double perMs = perStep * 1e-3 / w.timeStep();
     const double dPhi = b.solidFraction - referenceBulk.solidFraction, dZ = b.coordination - referenceBulk.coordination;
     const double dP = (b.pressure - referenceBulk.pressure) / referenceBulk.pressure;
-    std::printf("%-26s %12.3f %12.3f %10.2e %10.2e %10.2e %12.2e %12.2e %12.2e\n", v.name.c_str(), perStep, perMs,
+    std::printf("%-32s %12.3f %12.3f %10.2e %10.2e %10.2e %12.2e %12.2e %12.2e\n", v.name.c_str(), perStep, perMs,
                 quantile(errors, 0.5), quantile(errors, 0.99), quantile(errors, 1.0), dPhi, dZ, dP);
     std::fflush(stdout);
     if (tsv) {

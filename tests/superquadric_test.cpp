@@ -1,6 +1,7 @@
 // Superquadric shape (superquadric.hpp; 004 Eq. 15): gauge derivatives against finite
 // differences for n up to 20 and near the coordinate planes (n1 = n2 takes the single 3-D norm,
-// checked against 004 Eq. 15 like the nested one), support map, parametrisation,
+// checked against 004 Eq. 15 like the nested one), the inside-outside function F = g^n1 and its
+// gradient by the chain rule, support map, parametrisation,
 // bounding radius, and the closed-form volume and inertia (Jaklic et al. 2000) against an
 // independent numerical quadrature of the solid.
 
@@ -56,6 +57,25 @@ TEST(Superquadric, DerivativesMatchFiniteDifferences) {
                 << "n1=" << s.n1() << " n2=" << s.n2() << " x=" << x.transpose();
           }
         }
+      }
+    }
+  }
+}
+
+TEST(Superquadric, FirstDerivativesAndInsideOutside) {
+  for (const Superquadric& s : shapes()) {
+    for (const Vec3& p : probePoints(s)) {
+      for (const double scale : {1.0, 0.9, 1.2}) {
+        const Vec3 x = scale * p;
+        const GaugeDerivatives d = s.derivatives(x), first = s.firstDerivatives(x);
+        EXPECT_EQ(first.value, d.value);  // the same operations: the same bits
+        EXPECT_EQ(first.gradient, d.gradient);
+        // F = g^n1 (the left side of 004 Eq. 15), grad F = n1 g^(n1 - 1) grad g.
+        const GaugeDerivatives f = s.insideOutside(x);
+        const double g = d.value;
+        EXPECT_NEAR(f.value, std::pow(g, s.n1()), 1e-13 * std::pow(g, s.n1())) << "n1=" << s.n1() << " n2=" << s.n2();
+        const Vec3 chain = s.n1() * std::pow(g, s.n1() - 1.0) * d.gradient;
+        EXPECT_LT((f.gradient - chain).norm(), 1e-12 * chain.norm()) << "n1=" << s.n1() << " n2=" << s.n2() << " x=" << x.transpose();
       }
     }
   }

@@ -153,21 +153,25 @@ double Superquadric::gauge(const Vec3& x) const {
   return pNorm(pNorm(u.x(), u.y(), n2_), u.z(), n1_);
 }
 
-GaugeDerivatives Superquadric::derivatives(const Vec3& x) const {
-  const Vec3 u = x.cwiseQuotient(halfExtents_);
+namespace {
+
+/// g, grad g and, withHessian, the Hessian of g at x.
+template <bool withHessian>
+GaugeDerivatives gaugeDerivatives(const Superquadric& s, const Vec3& x) {
+  const Vec3 u = x.cwiseQuotient(s.halfExtents());
   GaugeDerivatives out;
   Vec3 gradU;
-  Mat3 hessU;
-  if (isEllipsoid()) {
+  [[maybe_unused]] Mat3 hessU;
+  if (s.isEllipsoid()) {
     const double g = u.norm();
     if (g == 0.0) return out;
     out.value = g;
     gradU = u / g;
-    hessU = (Mat3::Identity() - gradU * gradU.transpose()) / g;
-  } else if (n1_ == n2_) {
+    if constexpr (withHessian) hessU = (Mat3::Identity() - gradU * gradU.transpose()) / g;
+  } else if (s.n1() == s.n2()) {
     // g = ||u||_p: with t_i = |u_i| / g, dg/du_i = sgn(u_i) t_i^(p-1) and
     // g d2g/du_i du_j = (p - 1) (delta_ij t_i^(p-2) - dg/du_i dg/du_j).
-    const double p = n1_, g = pNorm3(u, p);
+    const double p = s.n1(), g = pNorm3(u, p);
     if (g == 0.0) return out;
     out.value = g;
     Vec3 curvature;  // t_i^(p-2)
@@ -176,31 +180,63 @@ GaugeDerivatives Superquadric::derivatives(const Vec3& x) const {
       curvature(i) = power(t, p - 2.0);
       gradU(i) = std::copysign(curvature(i) * t, u(i));
     }
-    hessU = (p - 1.0) / g * (Mat3(curvature.asDiagonal()) - gradU * gradU.transpose());
+    if constexpr (withHessian) hessU = (p - 1.0) / g * (Mat3(curvature.asDiagonal()) - gradU * gradU.transpose());
   } else {
-    const NormDerivatives in = pNormDerivatives(u.x(), u.y(), n2_);     // s(u, v)
-    const NormDerivatives outer = pNormDerivatives(in.h, u.z(), n1_);  // g(s, w)
+    const NormDerivatives in = pNormDerivatives(u.x(), u.y(), s.n2());     // s(u, v)
+    const NormDerivatives outer = pNormDerivatives(in.h, u.z(), s.n1());  // g(s, w)
     const double g = outer.h;
     if (g == 0.0) return out;
     out.value = g;
     gradU = Vec3(outer.du * in.du, outer.du * in.dv, outer.dv);
-    // Chain rule g(s(u, v), w); every term carries 1/g, and g_s * s_ab = t_s^(n1-2) (s s_ab) / g.
-    const double sUU = outer.hUU * in.du * in.du + outer.powU * in.hUU;
-    const double sUV = outer.hUU * in.du * in.dv + outer.powU * in.hUV;
-    const double sVV = outer.hUU * in.dv * in.dv + outer.powU * in.hVV;
-    hessU << sUU, sUV, outer.hUV * in.du,  //
-        sUV, sVV, outer.hUV * in.dv,       //
-        outer.hUV * in.du, outer.hUV * in.dv, outer.hVV;
-    hessU /= g;
+    if constexpr (withHessian) {
+      // Chain rule g(s(u, v), w); every term carries 1/g, and g_s * s_ab = t_s^(n1-2) (s s_ab) / g.
+      const double sUU = outer.hUU * in.du * in.du + outer.powU * in.hUU;
+      const double sUV = outer.hUU * in.du * in.dv + outer.powU * in.hUV;
+      const double sVV = outer.hUU * in.dv * in.dv + outer.powU * in.hVV;
+      hessU << sUU, sUV, outer.hUV * in.du,  //
+          sUV, sVV, outer.hUV * in.dv,       //
+          outer.hUV * in.du, outer.hUV * in.dv, outer.hVV;
+      hessU /= g;
+    }
   }
-  const Vec3 inv = halfExtents_.cwiseInverse();
+  const Vec3 inv = s.halfExtents().cwiseInverse();
   out.gradient = gradU.cwiseProduct(inv);
-  out.hessian = inv.asDiagonal() * hessU * inv.asDiagonal();
+  if constexpr (withHessian) out.hessian = inv.asDiagonal() * hessU * inv.asDiagonal();
+  return out;
+}
+
+}  // namespace
+
+GaugeDerivatives Superquadric::derivatives(const Vec3& x) const { return gaugeDerivatives<true>(*this, x); }
+
+GaugeDerivatives Superquadric::firstDerivatives(const Vec3& x) const { return gaugeDerivatives<false>(*this, x); }
+
+GaugeDerivatives Superquadric::insideOutside(const Vec3& x) const {
+  // With P_i = |u_i|^n and dP_i/du_i = n sgn(u_i) |u_i|^(n-1): F = (P_x + P_y)^(n1/n2) + P_z
+  // (n2 inside n1), F = P_x + P_y + P_z when n1 = n2.
+  const Vec3 u = x.cwiseQuotient(halfExtents_), inv = halfExtents_.cwiseInverse();
+  const auto part = [](double v, double n, double& slope) {  // |v|^n, and n sgn(v) |v|^(n-1) in slope
+    const double below = power(std::abs(v), n - 1.0);
+    slope = std::copysign(n * below, v);
+    return below * std::abs(v);
+  };
+  GaugeDerivatives out;
+  Vec3 slope;
+  const double px = part(u.x(), n2_, slope.x()), py = part(u.y(), n2_, slope.y()), pz = part(u.z(), n1_, slope.z());
+  if (n1_ == n2_) {
+    out.value = px + py + pz;
+  } else {
+    const double inner = px + py, outer = inner > 0.0 ? std::pow(inner, n1_ / n2_) : 0.0;
+    out.value = outer + pz;
+    const double chain = inner > 0.0 ? n1_ / n2_ * outer / inner : 0.0;  // d(inner^(n1/n2)) / d(inner)
+    slope.x() *= chain, slope.y() *= chain;
+  }
+  out.gradient = slope.cwiseProduct(inv);
   return out;
 }
 
 Vec3 Superquadric::outwardNormal(const Vec3& x) const {
-  return derivatives(x).gradient.normalized();
+  return firstDerivatives(x).gradient.normalized();
 }
 
 Vec3 Superquadric::supportPoint(const Vec3& direction) const {

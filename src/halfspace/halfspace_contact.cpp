@@ -12,16 +12,21 @@
 
 namespace sqdem {
 
+/// The cells [first, last) of one row of the grid.
+struct CellSpan {
+  int first = 0, last = 0;
+};
+
 namespace {
 
-/// u += K * p on an nx x ny grid, summed directly over the loaded cells; `kernel` at offsets
-/// (di, dj), (di + nx - 1) + (2 nx - 1) (dj + ny - 1). Compiled also for x86-64-v3 (four lanes
+/// u += K * p on an nx x ny grid, summed directly over the loaded cells, in each row j at the
+/// cells rows[j]; `kernel` at offsets (di, dj), (di + nx - 1) + (2 nx - 1) (dj + ny - 1). Compiled also for x86-64-v3 (four lanes
 /// instead of two) and chosen at run time: each cell's sum is the same sequence of operations
 /// either way, the same bits.
 #if defined(__x86_64__) && defined(__GLIBC__) && !defined(__clang__)  // an ifunc: GCC on glibc
 [[gnu::target_clones("arch=x86-64-v3", "default")]]
 #endif
-void directConvolution(const double* kernel, const double* p, double* u, int nx, int ny) {
+void directConvolution(const double* kernel, const double* p, double* u, int nx, int ny, const CellSpan* rows) {
   const std::size_t row = static_cast<std::size_t>(2 * nx - 1);
   for (int sj = 0; sj < ny; ++sj) {
     for (int si = 0; si < nx; ++si) {
@@ -31,7 +36,7 @@ void directConvolution(const double* kernel, const double* p, double* u, int nx,
         // u(i, j) += K(i - si, j - sj) load: the kernel's row j - sj from offset -si on
         const double* k = kernel + row * static_cast<std::size_t>(j - sj + ny - 1) + static_cast<std::size_t>(nx - 1 - si);
         double* out = u + static_cast<std::size_t>(nx) * j;
-        for (int i = 0; i < nx; ++i) out[i] += k[i] * load;
+        for (int i = rows[j].first; i < rows[j].last; ++i) out[i] += k[i] * load;
       }
     }
   }
@@ -93,11 +98,15 @@ struct HalfspaceSolver::Convolution {
     pass(mx, my, [&](int i, int j) { return static_cast<std::size_t>(i) + static_cast<std::size_t>(mx) * j; });
   }
 
-  std::vector<double> apply(const std::vector<double>& p) const { return direct.empty() ? applyTransformed(p) : applyDirect(p); }
+  /// u at every cell, or (summed directly) at the cells `rows` only, 0 elsewhere.
+  std::vector<double> apply(const std::vector<double>& p, const std::vector<CellSpan>& rows) const {
+    return direct.empty() ? applyTransformed(p) : applyDirect(p, rows);
+  }
+  std::vector<double> apply(const std::vector<double>& p) const { return apply(p, std::vector<CellSpan>(ny, CellSpan{0, nx})); }
 
-  std::vector<double> applyDirect(const std::vector<double>& p) const {
+  std::vector<double> applyDirect(const std::vector<double>& p, const std::vector<CellSpan>& rows) const {
     std::vector<double> u(p.size(), 0.0);
-    directConvolution(direct.data(), p.data(), u.data(), nx, ny);
+    directConvolution(direct.data(), p.data(), u.data(), nx, ny, rows.data());
     return u;
   }
 
@@ -175,7 +184,20 @@ HalfspaceContact HalfspaceSolver::solve(double approach, double load, double tol
   // p = 0 taken in (the conjugacy restarted then), the load restored. The displacement u = K p
   // follows the step: p - tau t moves it by -tau K t, known from the step's length; the
   // released and taken-in cells' corrections (few) are convolved on their own.
-  std::vector<double> g(n), t(n, 0.0), previous(n), correction(n), u = convolution_->apply(p);
+  // At a prescribed approach only cells with h < delta can touch; u is summed in each row over the
+  // span of those cells (0 outside it, where h >= delta and u >= 0 keep g >= 0: never taken in).
+  std::vector<CellSpan> rows(grid_.ny, CellSpan{0, grid_.nx});
+  if (!byLoad) {
+    for (int j = 0; j < grid_.ny; ++j) {
+      const double* row = h.data() + static_cast<std::size_t>(grid_.nx) * j;
+      CellSpan span{grid_.nx, 0};
+      for (int i = 0; i < grid_.nx; ++i) {
+        if (row[i] < approach) span.first = std::min(span.first, i), span.last = i + 1;
+      }
+      rows[j] = span.last > 0 ? span : CellSpan{};
+    }
+  }
+  std::vector<double> g(n), t(n, 0.0), previous(n), correction(n), u = convolution_->apply(p, rows);
   double gOld = 1.0;
   bool conjugate = false;
   const auto meanOverContact = [&](const std::vector<double>& v) {
@@ -191,7 +213,7 @@ HalfspaceContact HalfspaceSolver::solve(double approach, double load, double tol
     if (std::all_of(p.begin(), p.end(), [](double v) { return v == 0.0; })) {
       stiffness *= 0.25;
       seed();
-      u = convolution_->apply(p);
+      u = convolution_->apply(p, rows);
       conjugate = false;
     }
     for (std::size_t k = 0; k < n; ++k) g[k] = u[k] + h[k] - approach;
@@ -205,7 +227,7 @@ HalfspaceContact HalfspaceSolver::solve(double approach, double load, double tol
     }
     for (std::size_t k = 0; k < n; ++k) t[k] = p[k] > 0.0 ? g[k] + (conjugate ? G / gOld : 0.0) * t[k] : 0.0;
     gOld = G;
-    const std::vector<double> Kt = convolution_->apply(t);
+    const std::vector<double> Kt = convolution_->apply(t, rows);
     std::vector<double> r = Kt;
     if (byLoad) {
       const double mean = meanOverContact(r);
@@ -233,7 +255,7 @@ HalfspaceContact HalfspaceSolver::solve(double approach, double load, double tol
     }
     for (std::size_t k = 0; k < n; ++k) u[k] -= tau * Kt[k];
     if (std::any_of(correction.begin(), correction.end(), [](double v) { return v != 0.0; })) {
-      const std::vector<double> Kc = convolution_->apply(correction);
+      const std::vector<double> Kc = convolution_->apply(correction, rows);
       for (std::size_t k = 0; k < n; ++k) u[k] += Kc[k];
     }
     double total = 0.0, change = 0.0;

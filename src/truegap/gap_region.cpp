@@ -32,9 +32,12 @@ double crossing(const PairGap& gap, double level, const Vec2& d, double guess, d
   // A bracket [inside, outside] kept about the crossing; each step takes the crossing of the
   // power law through the last two points (log g linear in log rho: one step for a gap c rho^m),
   // or the bracket's geometric middle where that leaves it or where two steps did not halve it.
-  const auto at = [&](double rho) { return gap(rho * d.x(), rho * d.y()); };
+  // Each point's lines start from the last point's heights.
+  PairGap::Heights near;
+  double rho = guess, lastRho = rho;
+  const auto at = [&](double r) { return gap(r * d.x(), r * d.y(), near, std::abs(r - lastRho) * d.norm()); };
   double inside = 0.0, outside = std::numeric_limits<double>::infinity(), gOutside = 0.0;
-  double rho = guess, g = at(rho), lastRho = 0.0, lastG = 0.0, widthBefore = 0.0, width = 0.0;
+  double g = at(rho), lastG = 0.0, widthBefore = 0.0, width = 0.0;
   for (int step = 0; step < 100; ++step) {
     if (g < level) inside = rho;
     else outside = rho, gOutside = g;
@@ -59,8 +62,8 @@ double crossing(const PairGap& gap, double level, const Vec2& d, double guess, d
 
 }  // namespace
 
-GapGrid gapRegionGrid(const PairGap& gap, double level, int cells, double margin) {
-  if (!(level > 0.0) || cells < 2 || !(margin >= 0.0)) throw std::invalid_argument("gapRegionGrid: level > 0, cells >= 2, margin >= 0");
+GapRegion gapRegion(const PairGap& gap, double level) {
+  if (!(level > 0.0)) throw std::invalid_argument("gapRegion: level > 0");
   if (!(gap(0.0, 0.0) < level)) {
     throw std::runtime_error("the true gap: no point of the tangent plane where it is below the approach " + std::to_string(level) + " m");
   }
@@ -86,26 +89,38 @@ GapGrid gapRegionGrid(const PairGap& gap, double level, int cells, double margin
     frame = next;
     if (settled) break;
   }
-  // The grid along the crossings' principal axes, over their extent and the margin (the region
-  // bulges past the polygon of its crossings by ~2 % between rays).
-  const Vec2 e1(std::cos(frame.angle), std::sin(frame.angle)), e2(-e1.y(), e1.x());
-  double low1 = 0.0, high1 = 0.0, low2 = 0.0, high2 = 0.0;
+  // The extent of the crossings along their principal axes.
+  GapRegion region;
+  region.major = Vec2(std::cos(frame.angle), std::sin(frame.angle));
+  const Vec2 e2(-region.major.y(), region.major.x());
   for (const Vec2& p : crossings) {
-    low1 = std::min(low1, p.dot(e1)), high1 = std::max(high1, p.dot(e1));
-    low2 = std::min(low2, p.dot(e2)), high2 = std::max(high2, p.dot(e2));
+    region.low1 = std::min(region.low1, p.dot(region.major)), region.high1 = std::max(region.high1, p.dot(region.major));
+    region.low2 = std::min(region.low2, p.dot(e2)), region.high2 = std::max(region.high2, p.dot(e2));
   }
-  const double pad1 = margin * (high1 - low1), pad2 = margin * (high2 - low2);
+  return region;
+}
+
+GapGrid gapGrid(const PairGap& gap, const GapRegion& region, int cells, double margin) {
+  if (cells < 2 || !(margin >= 0.0)) throw std::invalid_argument("gapGrid: cells >= 2, margin >= 0");
+  // The margin also covers the region's bulge past the polygon of its crossings (~2 % between rays).
+  const Vec2 e1 = region.major, e2(-e1.y(), e1.x());
+  const double pad1 = margin * (region.high1 - region.low1), pad2 = margin * (region.high2 - region.low2);
   GapGrid grid;
   grid.nx = grid.ny = cells;
-  grid.x0 = low1 - pad1;
-  grid.y0 = low2 - pad2;
-  grid.hx = (high1 - low1 + 2.0 * pad1) / cells;
-  grid.hy = (high2 - low2 + 2.0 * pad2) / cells;
+  grid.x0 = region.low1 - pad1;
+  grid.y0 = region.low2 - pad2;
+  grid.hx = (region.high1 - region.low1 + 2.0 * pad1) / cells;
+  grid.hy = (region.high2 - region.low2 + 2.0 * pad2) / cells;
   grid.gap.resize(static_cast<std::size_t>(cells) * cells);
+  // Each cell's lines start from its neighbour's heights: the one before it in its row, or the
+  // row's first cell below it.
+  PairGap::Heights rowStart;
   for (int j = 0; j < cells; ++j) {
+    PairGap::Heights near = rowStart;
     for (int i = 0; i < cells; ++i) {
       const Vec2 p = grid.x(i) * e1 + grid.y(j) * e2;
-      grid.gap[i + static_cast<std::size_t>(cells) * j] = gap(p.x(), p.y());
+      grid.gap[i + static_cast<std::size_t>(cells) * j] = gap(p.x(), p.y(), near, i == 0 ? grid.hy : grid.hx);
+      if (i == 0) rowStart = near;
     }
   }
   return grid;

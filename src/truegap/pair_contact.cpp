@@ -8,8 +8,9 @@
 namespace sqdem {
 
 HalfspaceContact gapContact(const PairGap& gap, double approach, double effectiveModulus, int cells, double tolerance) {
+  const GapRegion region = gapRegion(gap, approach);
   for (const double margin : {0.04, 0.2, 0.5}) {
-    const HalfspaceSolver solver(gapRegionGrid(gap, approach, cells, margin), effectiveModulus);
+    const HalfspaceSolver solver(gapGrid(gap, region, cells, margin), effectiveModulus);
     HalfspaceContact result = solver.atApproach(approach, tolerance);
     if (!result.converged) {
       throw std::runtime_error("the true gap's contact: no convergence in " + std::to_string(result.iterations) + " iterations");

@@ -42,9 +42,15 @@ PairGap::PairGap(const PairBody& A, const PairBody& B, const Vec3& origin, const
       majorRadius_(radii.Rj) {}
 
 double PairGap::operator()(double x, double y) const {
+  Heights none;
+  return (*this)(x, y, none, 0.0);
+}
+
+double PairGap::operator()(double x, double y, Heights& near, double distance) const {
   const Vec3 q = origin_ + x * t1_ + y * t2_;
-  const double top = surfaceFarthestAlong(A_.shape, A_.pose, q, normal_), bottom = -surfaceFarthestAlong(B_.shape, B_.pose, q, -normal_);
-  return bottom - top + overlap_;  // +infinity where a line misses a body
+  near.top = surfaceFarthestAlong(A_.shape, A_.pose, q, normal_, near.top + distance);
+  near.bottom = -surfaceFarthestAlong(B_.shape, B_.pose, q, -normal_, distance - near.bottom);
+  return near.bottom - near.top + overlap_;  // +infinity where a line misses a body
 }
 
 }  // namespace sqdem

@@ -63,6 +63,11 @@ class Superquadric {
   double implicitFunction(const Vec3& x) const { return gauge(x) - 1.0; }
   /// g, grad g and Hessian of g at x (x != 0).
   GaugeDerivatives derivatives(const Vec3& x) const;
+  /// g and grad g at x (x != 0), the Hessian left 0: the same bits as derivatives'.
+  GaugeDerivatives firstDerivatives(const Vec3& x) const;
+  /// F = g^n1, the left side of Eq. 15 (the inside-outside function: F - 1 has the sign of
+  /// g - 1), and grad F at x, the Hessian left 0: no root taken. Convex as g is.
+  GaugeDerivatives insideOutside(const Vec3& x) const;
   /// Outward unit normal at (or radially through) x.
   Vec3 outwardNormal(const Vec3& x) const;
   /// Radial projection x / g(x) of x != 0 onto the surface.

@@ -11,10 +11,19 @@
 
 namespace sqdem {
 
-/// The gap on cells x cells covering the region where it is below `level` (m), widened on each
-/// side by `margin` times its extent; the grid's x axis is the region's major axis. Throws
-/// std::runtime_error when the gap at the contact is not below the level or the region is
-/// unbounded.
-GapGrid gapRegionGrid(const PairGap& gap, double level, int cells, double margin);
+/// The region's principal axes on the tangent plane (in the gap's t1, t2 coordinates) and its
+/// extent along them (m), the contact at 0.
+struct GapRegion {
+  Vec2 major = Vec2::UnitX();  ///< unit
+  double low1 = 0.0, high1 = 0.0, low2 = 0.0, high2 = 0.0;
+};
+
+/// The region where the gap is below `level` (m). Throws std::runtime_error when the gap at the
+/// contact is not below the level or the region is unbounded.
+GapRegion gapRegion(const PairGap& gap, double level);
+
+/// The gap on cells x cells covering the region, widened on each side by `margin` times its
+/// extent; the grid's x axis is the region's major axis.
+GapGrid gapGrid(const PairGap& gap, const GapRegion& region, int cells, double margin);
 
 }  // namespace sqdem

@@ -12,6 +12,8 @@
 // misses a body. Half-space theory takes both surfaces as flat on the contact's scale: the
 // small-slope approximation of every Hertz-type law.
 
+#include <limits>
+
 #include "sqdem/contact/contact_geometry.hpp"
 #include "sqdem/geometry/pose.hpp"
 #include "sqdem/geometry/superquadric.hpp"
@@ -36,8 +38,17 @@ class PairGap {
   static PairGap touchingAt(const Superquadric& A, const Superquadric& B, const Vec3& localA, const Vec3& localB,
                             const Quat& relative, const Vec3& majorAxisA, const RelativeRadii& radii);
 
+  /// The two surfaces' heights along n above a plane point (m): A's top, B's bottom.
+  struct Heights {
+    double top = std::numeric_limits<double>::quiet_NaN(), bottom = std::numeric_limits<double>::quiet_NaN();
+  };
+
   /// The gap (m) above the plane point origin + x t1 + y t2 (x, y in m).
   double operator()(double x, double y) const;
+  /// The same, each surface's Newton line started from `near`, the heights above a point at most
+  /// `distance` (m) away (surface_along_line.hpp: the same answer, in fewer steps where the
+  /// surfaces' slopes are below 1); `near` becomes this point's heights.
+  double operator()(double x, double y, Heights& near, double distance) const;
   /// sqrt(R_vol,A R_vol,B) (m): the pair's length scale.
   double referenceLength() const { return referenceLength_; }
   /// sqrt(R_minor / R_major) of the gap's quadratic form at the contact (relative radii capped,
