@@ -2,6 +2,7 @@
 # Run time vs error benchmark (bench/accuracy_bench.cpp) on the ellipsoid and n = 6 beds, then a
 # Pareto plot (cost per particle and simulated ms against the 99th-percentile contact force
 # error). Run from the repository root after building; writes to OUT (default bench-out/).
+# About 20 minutes, most of it the true-gap law's variants on the n = 6 bed.
 #   bash bench/run_accuracy.sh [steps, default 1000]
 set -eu
 OUT=${OUT:-bench-out}

@@ -1,9 +1,10 @@
 // Where a line meets a superquadric (contact/surface_along_line.hpp): the far crossing lies on the
-// surface (g = 1) with the body behind it along the line (g < 1 just before it, closed form of
-// the surface's definition, 004 Eq. 15); every start gives the same crossing: beyond it near and
-// far, inside the body, before the body (Newton is monotone on the convex gauge only from beyond
-// the far side, and the search starts afresh from the bounding sphere otherwise); a line that
-// misses the body is -infinity from any start.
+// surface (gauge g = 1, the surface's definition, 004 Eq. 15) with the body behind it along the
+// line (g < 1 just before it); every start gives the same crossing: beyond it near and far, inside
+// the body, before the body (Newton on the convex F = g^n1 is monotone only from beyond the far
+// side, and the search starts afresh from the sphere around the body's box otherwise); a line that
+// misses the body, beside it or through the box's corner outside it, is -infinity from any start;
+// a thin plate of n = 50 seen edge-on and face-on.
 
 #include <gtest/gtest.h>
 
@@ -36,7 +37,7 @@ TEST(SurfaceAlongLine, EveryStartFindsTheFarCrossing) {
       EXPECT_LT(s.gauge(pose.toBody(q + (t - 1e-6 * R) * d)), 1.0);  // the body behind it
       EXPECT_GT(s.gauge(pose.toBody(q + (t + 1e-6 * R) * d)), 1.0);
       const double before = (inside - q).dot(d) - 3.0 * R;  // a point before the body along the line
-      for (const double start : {t + 1e-9 * R, t + 1e-3 * R, t + 0.5 * R, t + 10.0 * R, t, t - 1e-3 * R, 0.3 * R, before}) {
+      for (const double start : {t + 1e-9 * R, t + 1e-3 * R, t + 0.5 * R, t + R, t, t - 1e-3 * R, 0.3 * R, before}) {
         EXPECT_NEAR(surfaceFarthestAlong(s, pose, q, d, start), t, 1e-12 * R) << "start " << start << " crossing " << t;
       }
       // A line beside the body, parallel to d at twice its bounding radius: no crossing.
@@ -46,6 +47,26 @@ TEST(SurfaceAlongLine, EveryStartFindsTheFarCrossing) {
       }
     }
   }
+}
+
+TEST(SurfaceAlongLine, MissesPastTheCornerAndThinPlates) {
+  // n = 10 cube of half-edge 1: along (1, 1, 1) its surface is at 3^(1/2 - 1/10) = 1.552 from the
+  // centre, its box's corner at 3^(1/2) = 1.732; a line across (1, 1, 1) at 1.65 misses the body
+  // inside the box's sphere.
+  const Superquadric cube(1.0, 1.0, 1.0, 10.0, 10.0);
+  const Vec3 diagonal = Vec3(1, 1, 1).normalized(), across = Vec3(1, -1, 0).normalized();
+  for (const double start : {std::numeric_limits<double>::infinity(), 0.0, 0.5}) {
+    EXPECT_EQ(surfaceFarthestAlong(cube, Pose{}, 1.65 * diagonal, across, start), -std::numeric_limits<double>::infinity());
+  }
+  const double t = surfaceFarthestAlong(cube, Pose{}, 1.5 * diagonal, across);  // through the body's diagonal section
+  EXPECT_GT(t, 0.0);
+  EXPECT_NEAR(cube.gauge(1.5 * diagonal + t * across), 1.0, 1e-12);
+  // A plate 100 x 100 x 2 (half-extents 1, 1, 0.02), n = 50: its top above the centre is at 0.02,
+  // its far edge along x at 1.
+  const Superquadric plate(1.0, 1.0, 0.02, 50.0, 50.0);
+  EXPECT_NEAR(surfaceFarthestAlong(plate, Pose{}, Vec3::Zero(), Vec3::UnitZ()), 0.02, 1e-14);
+  EXPECT_NEAR(surfaceFarthestAlong(plate, Pose{}, Vec3::Zero(), Vec3::UnitX()), 1.0, 1e-14);
+  EXPECT_NEAR(surfaceFarthestAlong(plate, Pose{}, Vec3(0.3, 0.2, -0.5), Vec3::UnitZ()), 0.52, 1e-14);
 }
 
 }  // namespace

@@ -12,17 +12,17 @@
 
 namespace sqdem {
 
+namespace {
+
 /// The cells [first, last) of one row of the grid.
 struct CellSpan {
   int first = 0, last = 0;
 };
 
-namespace {
-
 /// u += K * p on an nx x ny grid, summed directly over the loaded cells, in each row j at the
-/// cells rows[j]; `kernel` at offsets (di, dj), (di + nx - 1) + (2 nx - 1) (dj + ny - 1). Compiled also for x86-64-v3 (four lanes
-/// instead of two) and chosen at run time: each cell's sum is the same sequence of operations
-/// either way, the same bits.
+/// cells rows[j]; `kernel` at offsets (di, dj), (di + nx - 1) + (2 nx - 1) (dj + ny - 1).
+/// Compiled also for x86-64-v3 (four lanes instead of two) and chosen at run time: each cell's
+/// sum is the same sequence of operations either way, the same bits.
 #if defined(__x86_64__) && defined(__GLIBC__) && !defined(__clang__)  // an ifunc: GCC on glibc
 [[gnu::target_clones("arch=x86-64-v3", "default")]]
 #endif
@@ -57,8 +57,10 @@ struct HalfspaceSolver::Convolution {
   std::vector<double> direct;    // the kernel at offsets (di, dj), (di + nx - 1) + (2 nx - 1) (dj + ny - 1); small grids
   std::vector<Complex> kernel;   // its padded transform; large grids
   mutable Eigen::FFT<double> fft;
+  std::vector<CellSpan> wholeRows;  // every cell of every row
 
-  Convolution(const GapGrid& grid, double effectiveModulus) : nx(grid.nx), ny(grid.ny), mx(2 * grid.nx), my(2 * grid.ny) {
+  Convolution(const GapGrid& grid, double effectiveModulus)
+      : nx(grid.nx), ny(grid.ny), mx(2 * grid.nx), my(2 * grid.ny), wholeRows(grid.ny, CellSpan{0, grid.nx}) {
     const double scale = 1.0 / (std::numbers::pi * effectiveModulus);
     const bool small = nx * ny <= largestDirect;
     if (small) direct.resize(static_cast<std::size_t>(2 * nx - 1) * (2 * ny - 1));
@@ -102,7 +104,7 @@ struct HalfspaceSolver::Convolution {
   std::vector<double> apply(const std::vector<double>& p, const std::vector<CellSpan>& rows) const {
     return direct.empty() ? applyTransformed(p) : applyDirect(p, rows);
   }
-  std::vector<double> apply(const std::vector<double>& p) const { return apply(p, std::vector<CellSpan>(ny, CellSpan{0, nx})); }
+  std::vector<double> apply(const std::vector<double>& p) const { return apply(p, wholeRows); }
 
   std::vector<double> applyDirect(const std::vector<double>& p, const std::vector<CellSpan>& rows) const {
     std::vector<double> u(p.size(), 0.0);
@@ -184,9 +186,9 @@ HalfspaceContact HalfspaceSolver::solve(double approach, double load, double tol
   // p = 0 taken in (the conjugacy restarted then), the load restored. The displacement u = K p
   // follows the step: p - tau t moves it by -tau K t, known from the step's length; the
   // released and taken-in cells' corrections (few) are convolved on their own.
-  // At a prescribed approach only cells with h < delta can touch; u is summed in each row over the
-  // span of those cells (0 outside it, where h >= delta and u >= 0 keep g >= 0: never taken in).
-  std::vector<CellSpan> rows(grid_.ny, CellSpan{0, grid_.nx});
+  // At a prescribed approach only cells with h < delta can touch (u >= 0); u is summed in each row
+  // over the span of those cells, 0 outside it, where h >= delta keeps g >= 0: never taken in.
+  std::vector<CellSpan> rows = convolution_->wholeRows;
   if (!byLoad) {
     for (int j = 0; j < grid_.ny; ++j) {
       const double* row = h.data() + static_cast<std::size_t>(grid_.nx) * j;

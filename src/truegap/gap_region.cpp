@@ -92,10 +92,9 @@ GapRegion gapRegion(const PairGap& gap, double level) {
   // The extent of the crossings along their principal axes.
   GapRegion region;
   region.major = Vec2(std::cos(frame.angle), std::sin(frame.angle));
-  const Vec2 e2(-region.major.y(), region.major.x());
   for (const Vec2& p : crossings) {
     region.low1 = std::min(region.low1, p.dot(region.major)), region.high1 = std::max(region.high1, p.dot(region.major));
-    region.low2 = std::min(region.low2, p.dot(e2)), region.high2 = std::max(region.high2, p.dot(e2));
+    region.low2 = std::min(region.low2, p.dot(region.minor())), region.high2 = std::max(region.high2, p.dot(region.minor()));
   }
   return region;
 }
@@ -103,7 +102,7 @@ GapRegion gapRegion(const PairGap& gap, double level) {
 GapGrid gapGrid(const PairGap& gap, const GapRegion& region, int cells, double margin) {
   if (cells < 2 || !(margin >= 0.0)) throw std::invalid_argument("gapGrid: cells >= 2, margin >= 0");
   // The margin also covers the region's bulge past the polygon of its crossings (~2 % between rays).
-  const Vec2 e1 = region.major, e2(-e1.y(), e1.x());
+  const Vec2 e1 = region.major, e2 = region.minor();
   const double pad1 = margin * (region.high1 - region.low1), pad2 = margin * (region.high2 - region.low2);
   GapGrid grid;
   grid.nx = grid.ny = cells;

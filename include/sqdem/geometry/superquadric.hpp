@@ -25,7 +25,7 @@
 
 namespace sqdem {
 
-/// Value, gradient and Hessian of the gauge g at one body-frame point.
+/// Value, gradient and Hessian of the gauge g (or of F = g^n1, insideOutside) at one body-frame point.
 struct GaugeDerivatives {
   double value = 0.0;
   Vec3 gradient = Vec3::Zero();

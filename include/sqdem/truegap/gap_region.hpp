@@ -16,6 +16,8 @@ namespace sqdem {
 struct GapRegion {
   Vec2 major = Vec2::UnitX();  ///< unit
   double low1 = 0.0, high1 = 0.0, low2 = 0.0, high2 = 0.0;
+
+  Vec2 minor() const { return {-major.y(), major.x()}; }
 };
 
 /// The region where the gap is below `level` (m). Throws std::runtime_error when the gap at the

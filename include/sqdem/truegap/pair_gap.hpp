@@ -46,8 +46,8 @@ class PairGap {
   /// The gap (m) above the plane point origin + x t1 + y t2 (x, y in m).
   double operator()(double x, double y) const;
   /// The same, each surface's Newton line started from `near`, the heights above a point at most
-  /// `distance` (m) away (surface_along_line.hpp: the same answer, in fewer steps where the
-  /// surfaces' slopes are below 1); `near` becomes this point's heights.
+  /// `distance` (m) away (surface_along_line.hpp: the same answer to Newton's tolerance, in fewer
+  /// steps where the surfaces' slopes are below 1); `near` becomes this point's heights.
   double operator()(double x, double y, Heights& near, double distance) const;
   /// sqrt(R_vol,A R_vol,B) (m): the pair's length scale.
   double referenceLength() const { return referenceLength_; }
