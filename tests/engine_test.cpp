@@ -83,6 +83,31 @@ TEST(Engine, ResultsDoNotDependOnTheThreadCount) {
   }
 }
 
+// The true-gap law's rungs are solved by the whole team from one queue, after the kernels and
+// before the laws that wait for them (docs/architecture.md, "A step"): a bed of blocky grains
+// (n = 5, where every contact takes rungs) gives the same bits, the same rungs and no fallback
+// on 1 and 2 threads.
+TEST(Engine, TrueGapRungsFromTheTeamsQueueDoNotDependOnTheThreadCount) {
+  std::string scene = replaced(bedScene, "grains: {volume_radius: [0.4e-3, 0.6e-3], aspect_b: [0.6, 1.2], aspect_c: [0.6, 1.2]}",
+                               "grains: {volume_radius: [0.4e-3, 0.6e-3], aspect_b: [0.6, 1.2], aspect_c: [0.6, 1.2], n1: 5, n2: 5}");
+  scene = replaced(scene, "- materials: [glass, glass]", "- {materials: [glass, glass], normal: true_gap, curvature_tolerance: 1.0e-2}");
+  scene = replaced(scene, "count: 60", "count: 40");
+  scene = replaced(scene, "hi: [6.0e-3, 6.0e-3, 11.0e-3]", "hi: [6.0e-3, 6.0e-3, 4.0e-3]");  // a bed within the run
+  const auto run = [&](int threads) {
+    omp_set_num_threads(threads);
+    return pouredBed(loadScene(writeScene("true_gap_bed", scene)), 50.0, 20000);
+  };
+  const World one = run(1), two = run(2);
+  const ContactStatistics &a = one.totalStatistics(), &b = two.totalStatistics();
+  std::printf("%zu contacts, %lld rungs solved, %lld detector calls\n", one.contacts().size(), a.trueGapRungs, a.detectorCalls);
+  ASSERT_GT(one.contacts().size(), 15u);
+  EXPECT_GT(a.trueGapRungs, 500);
+  EXPECT_EQ(a.trueGapRungs, b.trueGapRungs);
+  EXPECT_EQ(a.trueGapFallbacks, 0);
+  EXPECT_EQ(b.trueGapFallbacks, 0);
+  ASSERT_EQ(one.particles().position, two.particles().position);
+}
+
 // Newton's third law and equilibrium: once the bed is at rest, the bottom wall carries the
 // weight of all particles, sum m g, within 0.1 %.
 // Both broad phases return the same sorted candidate list (neighbour_list_test.cpp), so a run
@@ -123,7 +148,7 @@ TEST(Engine, RestingBedWallForceEqualsWeight) {
 // A checkpoint restores the state so that the continuation is bitwise identical.
 TEST(Engine, CheckpointRestartContinuesBitwise) {
   const Scene scene = loadScene(writeScene("bed", bedScene));
-  World original = pouredBed(scene, 50.0, 30000);
+  World original = pouredBed(scene, 50.0, 20000);
   CheckpointWriter checkpoint;
   original.writeState(checkpoint);
   for (int s = 0; s < 5000; ++s) original.step();

@@ -4,7 +4,7 @@
 #include <omp.h>
 
 #include <algorithm>
-#include <bit>
+#include <atomic>
 #include <cmath>
 #include <optional>
 #include <span>
@@ -171,38 +171,39 @@ LawGeometry cachedLawGeometry(const InteractionScene& scene, const ContactModel&
   return held;
 }
 
-/// The true-gap law's rungs around contact k's overlap (mechanics/true_gap_law.hpp), handed to
-/// the law in `view`: solved on the pose the curvature cache keeps (its points and the bodies'
-/// relative orientation: the same rungs from the same cache on any thread or rank, and after a
-/// restart), or, without a cache, on the step's own pose (and dropped after it). Where a rung's
-/// half-space contact failed on that pose the contact takes elliptic Hertz (no rungs handed on),
-/// counted, until the pose is refreshed.
-template <PairKind Kind>
-void attachTrueGapRungs(const InteractionScene& scene, const ContactModel& model, const TrueGapLaw& law, bool cached, ContactStore& s,
-                        std::uint32_t k, const ContactGeometry& g, LawGeometry& view, long long& solves, long long& fallbacks) {
+/// Whether contact k's true-gap rungs around `overlap` (mechanics/true_gap_law.hpp) wait to be
+/// solved (Interactions::solveDeferredRungs): not where one of them failed on this pose. Solved
+/// on the pose the curvature cache keeps, or without a cache on the step's own (rungPose), whose
+/// rungs are dropped after it.
+bool rungsWait(TrueGapRungs& rungs, const Superquadric& A, const Superquadric& B, bool cached, double overlap) {
+  if (rungs.length == 0.0) rungs = trueGapLadder(A, B);
+  if (!cached) rungs.forget();
+  if (rungs.weight == 0.0 || !(overlap > 0.0)) return false;
+  const int segment = rungs.segment(overlap);
+  return !(rungs.has(segment) && rungs.has(segment + 1)) && !rungs.failed(segment) && !rungs.failed(segment + 1);
+}
+
+/// The pose contact k's rungs are solved on: the one its curvature cache keeps (its points and
+/// the bodies' relative orientation: the same rungs from the same cache on any thread or rank,
+/// and after a restart), or without a cache the step's own.
+PairGap rungPose(const InteractionScene& scene, const ContactStore& s, std::uint32_t k, bool cached, const ContactGeometry& g) {
   const ParticleStore& p = scene.particles;
   const std::uint32_t a = s.a[k], b = s.b[k];
   const Superquadric &A = scene.shapes[p.shape[a]], &B = scene.shapes[p.shape[b]];
-  TrueGapRungs& rungs = s.trueGap[k];
-  if (rungs.length == 0.0) rungs = trueGapLadder(A, B);
-  if (!cached) rungs.forget();
+  if (!cached) return PairGap({A, poseOf(p, a)}, {B, poseOf(p, b)}, g);
+  const CurvatureCache& c = s.curvatureCache[k];
+  return PairGap::touchingAt(A, B, c.localA, c.localB, Quat(c.relative), c.majorAxisA, c.radii);
+}
+
+/// The rungs handed on to the law in `view`; where one around its overlap is missing (its
+/// half-space contact failed on this pose) none: elliptic Hertz, counted, until the pose is
+/// refreshed.
+void handOnRungs(const TrueGapRungs& rungs, LawGeometry& view, long long& fallbacks) {
   view.contact.trueGap = &rungs;
   if (rungs.weight == 0.0 || !(view.overlap > 0.0)) return;
   const int segment = rungs.segment(view.overlap);
   if (rungs.has(segment) && rungs.has(segment + 1)) return;
-  if (!rungs.failed(segment) && !rungs.failed(segment + 1)) {
-    const int before = std::popcount(rungs.solved);
-    const auto solve = [&](const PairGap& gap) { solveRungs(rungs, gap, model.effectiveModulus, law.cells, segment, segment + 1); };
-    if (cached) {
-      const CurvatureCache& c = s.curvatureCache[k];
-      solve(PairGap::touchingAt(A, B, c.localA, c.localB, Quat(c.relative), c.majorAxisA, c.radii));
-    } else {
-      solve(PairGap({A, poseOf(p, a)}, {B, poseOf(p, b)}, g));
-    }
-    solves += std::popcount(rungs.solved) - before;
-    if (rungs.has(segment) && rungs.has(segment + 1)) return;
-  }
-  view.contact.trueGap = nullptr;  // a rung failed on this pose: elliptic Hertz until the cache refreshes
+  view.contact.trueGap = nullptr;
   ++fallbacks;
 }
 
@@ -215,30 +216,105 @@ ContactModel asRun(ContactModel model, PairKind kind) {
   return model;
 }
 
-/// One group: detect, then (within the law's range) the law; the step's statistics; with the
-/// Ledger, each contact's energy (ContactEnergy). Every thread of the team runs it on its own
-/// members (Interactions::memberShare).
-template <PairKind Kind, NormalLawComponent Law, bool Ledger>
-void groupKernel(std::span<const std::uint32_t> members, const ContactModel& pairModel, const Law& law,
-                 const InteractionScene& scene, const std::vector<double>& speedBound, std::vector<detail::WarmSkip>* skips,
-                 ContactStore& s, ContactStatistics& statistics) {
-  const ContactModel model = asRun(pairModel, Kind);
-  [[maybe_unused]] const detail::RoundHertz roundHertz(model);
-  const bool cached = cachesCurvatures(model, Kind), moments = s.withMoment();
-  const double cosHalfAngle = std::cos(0.5 * model.curvatureTolerance);
+/// A kernel's counts, added to the step's statistics once per thread and group.
+struct KernelCounts {
   long long calls = 0, iterations = 0, confirmations = 0, failures = 0, deep = 0, lost = 0, invalid = 0, rungSolves = 0, rungFallbacks = 0;
   long long byStatus[contactStatusCount] = {};
+
+  /// A law's answer on a contact: an invalid form, a deep overlap.
+  void tally(const ContactForce& force, double overlap, const ContactKinematics& motion) {
+    invalid += !force.valid;
+    deep += force.acting && detail::deepOverlap(overlap, motion.volumeRadiusA, motion.volumeRadiusB);
+  }
+  void addTo(ContactStatistics& statistics, bool deepOverlapsExpected) const {
+#pragma omp critical(sqdem_contact_statistics)
+    {
+      statistics.detectorCalls += calls;
+      statistics.detectorIterations += iterations;
+      statistics.detectorConfirmations += confirmations;
+      statistics.detectorFailures += failures;
+      for (int k = 0; k < contactStatusCount; ++k) statistics.failuresByStatus[k] += byStatus[k];
+      (deepOverlapsExpected ? statistics.expectedDeepOverlaps : statistics.deepOverlaps) += deep;
+      statistics.lostAdhesions += lost;
+      statistics.lawFailures += invalid;
+      statistics.trueGapRungs += rungSolves;
+      statistics.trueGapFallbacks += rungFallbacks;
+    }
+  }
+};
+
+ContactHistory storedHistory(const ContactStore& s, std::uint32_t k) {
+  ContactHistory history{.spring = s.spring[k], .normal = s.normalHistory[k]};
+  if (s.withRolling) history.rolling = s.rolling[k];
+  return history;
+}
+
+/// The law on a contact's view (a round contact under Hertz takes roundHertzForce); with the
+/// ledger, its stored energy.
+template <NormalLawComponent Law, bool Ledger>
+ContactForce lawForce(const ContactModel& model, const Law& law, const LawGeometry& view, const ContactKinematics& motion,
+                      ContactHistory& history, double dt, double& stored) {
+  const ContactForce force = detail::contactForce(model, law, view, motion, history, dt);
+  if constexpr (Ledger) {
+    if (force.acting) stored = storedEnergy(law, view.contact, view.overlap, history.normal, force.normal - force.normalDamping);
+  }
+  return force;
+}
+
+/// Contact k's record of the step: the detector's normal, overlap and point, the law's loads and
+/// history; with the ledger, its work over the step (contact_work.hpp) and stored energy.
+template <PairKind Kind, bool Ledger>
+void record(const InteractionScene& scene, ContactStore& s, std::uint32_t k, const Vec3& normal, double overlap, const Vec3& point,
+            bool converged, const ContactHistory& history, const ContactForce& force, double stored) {
+  // The ledger's load before the step: the law's (the bond's part is the bond's work, bonds.cpp).
+  [[maybe_unused]] const detail::ContactLoad before =
+      Ledger ? detail::ContactLoad{s.normal[k], s.withBonds ? Vec3(s.force[k] - s.bond[k].force) : s.force[k], s.load[k]}
+             : detail::ContactLoad{};
+  [[maybe_unused]] const Vec3 pointBefore = Ledger ? s.point[k] : Vec3::Zero();
+  s.normal[k] = normal;
+  s.overlap[k] = overlap;
+  s.point[k] = point;
+  s.spring[k] = history.spring;
+  s.normalHistory[k] = history.normal;
+  if (s.withRolling) s.rolling[k] = history.rolling;
+  if (s.withMoment()) s.moment[k] = force.momentOnB;
+  s.acting[k] = force.acting;
+  s.force[k] = force.onB;
+  s.load[k] = {force.normal, force.normalDamping, force.normalStiffness, force.area, force.yielded};
+  if constexpr (Ledger) {
+    ContactEnergy& e = s.energy[k];
+    e = {};
+    if (before.force != Vec3::Zero() || force.acting) {  // a load before or after the step did work
+      const Vec3 at = converged ? point : pointBefore;
+      e = detail::contactWork(before, {normal, s.force[k], s.load[k]}, kinematics<Kind>(scene, s, k, at).relativeVelocity, scene.dt);
+    }
+    e.stored = stored;
+  }
+}
+
+/// Whether a group's laws may wait for true-gap rungs (DeferredLaw): the law's on particle pairs
+/// that are solved (walls keep elliptic Hertz, round kinds take no rungs).
+template <PairKind Kind, typename Law>
+constexpr bool waitsForRungs = std::is_same_v<Law, TrueGapLaw> && !round(Kind) && !withWall(Kind);
+
+/// One group: detect, then (within the law's range) the law; the step's statistics; with the
+/// Ledger, each contact's energy (ContactEnergy). Every thread of the team runs it on its own
+/// members (Interactions::memberShare); a law waiting for its true-gap rungs is handed over to
+/// `deferred` (finishDeferred completes it).
+template <PairKind Kind, NormalLawComponent Law, bool Ledger>
+void groupKernel(std::span<const std::uint32_t> members, std::uint32_t group, const ContactModel& pairModel, const Law& law,
+                 const InteractionScene& scene, const std::vector<double>& speedBound, std::vector<detail::WarmSkip>* skips,
+                 ContactStore& s, std::vector<DeferredLaw>& deferred, ContactStatistics& statistics) {
+  const ContactModel model = asRun(pairModel, Kind);
+  [[maybe_unused]] const detail::RoundHertz roundHertz(model);
+  const bool cached = cachesCurvatures(model, Kind);
+  const double cosHalfAngle = std::cos(0.5 * model.curvatureTolerance);
+  KernelCounts counts;
   const auto count = static_cast<std::ptrdiff_t>(members.size());
   for (std::ptrdiff_t m = 0; m < count; ++m) {
     const std::uint32_t k = members[m];
     if (m + ContactStore::prefetchAhead < count) s.prefetch(members[m + ContactStore::prefetchAhead]);
-    // The ledger's load before the step: the law's (the bond's part is the bond's work, bonds.cpp).
-    [[maybe_unused]] const detail::ContactLoad before =
-        Ledger ? detail::ContactLoad{s.normal[k], s.withBonds ? Vec3(s.force[k] - s.bond[k].force) : s.force[k], s.load[k]}
-               : detail::ContactLoad{};
-    [[maybe_unused]] const Vec3 pointBefore = Ledger ? s.point[k] : Vec3::Zero();
-    ContactHistory history{.spring = s.spring[k], .normal = s.normalHistory[k]};
-    if (s.withRolling) history.rolling = s.rolling[k];
+    ContactHistory history = storedHistory(s, k);
     const double range = normalRange(law, history.normal);
     // Round kinds solve a RoundContact (no body-frame points, no curvatures), the others a
     // ContactGeometry: both carry what the store keeps of the geometry.
@@ -247,7 +323,8 @@ void groupKernel(std::span<const std::uint32_t> members, const ContactModel& pai
         return detectRound<Kind>(scene, s, k, range);
       } else {
         const bool curvatures = model.usesCurvatures() && !cached;
-        return detect<Kind>(scene, speedBound, model, s, k, curvatures, skips != nullptr ? &(*skips)[k] : nullptr, confirmations);
+        return detect<Kind>(scene, speedBound, model, s, k, curvatures, skips != nullptr ? &(*skips)[k] : nullptr,
+                            counts.confirmations);
       }
     }();
     s.status[k] = g.status;
@@ -255,19 +332,27 @@ void groupKernel(std::span<const std::uint32_t> members, const ContactModel& pai
       s.localA[k] = g.localPointA;
       s.localB[k] = g.localPointB;
     }
-    s.normal[k] = g.normal;
-    s.overlap[k] = g.overlap;
-    s.point[k] = 0.5 * (g.pointA + g.pointB);
+    if constexpr (!withWall(Kind)) {
+      ++counts.calls;
+      if constexpr (!round(Kind)) counts.iterations += g.iterations;
+    }
+    if (g.status != ContactStatus::Converged && g.status != ContactStatus::Separated) {
+      ++counts.failures;
+      ++counts.byStatus[static_cast<int>(g.status)];
+    }
+    const Vec3 point = 0.5 * (g.pointA + g.pointB);
     // Out of its law's range a pair is a gap, kept as the next step's warm start or cull, and
     // its history ends; within range the law acts, or keeps its history without acting (a
     // detached contact inside a plastic dent).
     ContactForce force{.acting = false};
     [[maybe_unused]] double stored = 0.0;
     if (g.converged() && g.overlap > -range) {
-      const ContactKinematics motion = kinematics<Kind>(scene, s, k, s.point[k]);
-      NormalContact contact;  // what the law saw (HertzLaw's lean round form needs none, nor does its energy)
+      const ContactKinematics motion = kinematics<Kind>(scene, s, k, point);
       if constexpr (round(Kind) && std::is_same_v<Law, HertzLaw>) {
         force = detail::roundHertzForce(model, roundHertz, motion, g.overlap, g.normal, history, scene.dt);
+        if constexpr (Ledger) {  // (HertzLaw's lean round form needs no contact, nor does its energy)
+          if (force.acting) stored = storedEnergy(law, NormalContact{}, g.overlap, history.normal, force.normal - force.normalDamping);
+        }
       } else {
         LawGeometry view = [&] {
           if constexpr (round(Kind)) {
@@ -277,94 +362,83 @@ void groupKernel(std::span<const std::uint32_t> members, const ContactModel& pai
                           : detail::lawGeometry(model, g, motion);
           }
         }();
-        if constexpr (std::is_same_v<Law, TrueGapLaw> && !round(Kind) && !withWall(Kind)) {
-          attachTrueGapRungs<Kind>(scene, model, law, cached, s, k, g, view, rungSolves, rungFallbacks);
+        if constexpr (waitsForRungs<Kind, Law>) {
+          const ParticleStore& p = scene.particles;
+          if (rungsWait(s.trueGap[k], scene.shapes[p.shape[s.a[k]]], scene.shapes[p.shape[s.b[k]]], cached, view.overlap)) {
+            deferred.push_back({k, group, view, motion, point, rungPose(scene, s, k, cached, g)});
+            continue;  // its law and record: finishDeferred's
+          }
+          handOnRungs(s.trueGap[k], view, counts.rungFallbacks);
         }
-        contact = view.contact;
-        force = detail::contactForce(model, law, view, motion, history, scene.dt);
+        force = lawForce<Law, Ledger>(model, law, view, motion, history, scene.dt, stored);
       }
-      if constexpr (Ledger) {
-        if (force.acting) stored = storedEnergy(law, contact, g.overlap, history.normal, force.normal - force.normalDamping);
-      }
-      invalid += !force.valid;
-      deep += force.acting && detail::deepOverlap(g.overlap, motion.volumeRadiusA, motion.volumeRadiusB);
+      counts.tally(force, g.overlap, motion);
     } else {
-      lost += std::isinf(range);  // an adhesive contact its law still held
+      counts.lost += std::isinf(range);  // an adhesive contact its law still held
       history = {};
     }
-    s.spring[k] = history.spring;
-    s.normalHistory[k] = history.normal;
-    if (s.withRolling) s.rolling[k] = history.rolling;
-    if (moments) s.moment[k] = force.momentOnB;
-    s.acting[k] = force.acting;
-    s.force[k] = force.onB;
-    s.load[k] = {force.normal, force.normalDamping, force.normalStiffness, force.area, force.yielded};
-    if constexpr (Ledger) {
-      ContactEnergy& e = s.energy[k];
-      e = {};
-      if (before.force != Vec3::Zero() || force.acting) {  // a load before or after the step did work
-        const Vec3 at = g.converged() ? s.point[k] : pointBefore;
-        e = detail::contactWork(before, {s.normal[k], s.force[k], s.load[k]}, kinematics<Kind>(scene, s, k, at).relativeVelocity,
-                                scene.dt);
-      }
-      e.stored = stored;
-    }
-    if constexpr (!withWall(Kind)) {
-      ++calls;
-      if constexpr (!round(Kind)) iterations += g.iterations;
-    }
-    if (g.status != ContactStatus::Converged && g.status != ContactStatus::Separated) {
-      ++failures;
-      ++byStatus[static_cast<int>(g.status)];
-    }
+    record<Kind, Ledger>(scene, s, k, g.normal, g.overlap, point, g.converged(), history, force, stored);
     if constexpr (!round(Kind)) {  // (a round contact's record is all written above)
       if (!g.converged() && s.separation[k] <= 0.0) s.reset(k);  // nothing to warm-start or cull
     }
   }
-#pragma omp critical(sqdem_contact_statistics)
-  {
-    statistics.detectorCalls += calls;
-    statistics.detectorIterations += iterations;
-    statistics.detectorConfirmations += confirmations;
-    statistics.detectorFailures += failures;
-    for (int k = 0; k < contactStatusCount; ++k) statistics.failuresByStatus[k] += byStatus[k];
-    (model.deepOverlapsExpected ? statistics.expectedDeepOverlaps : statistics.deepOverlaps) += deep;
-    statistics.lostAdhesions += lost;
-    statistics.lawFailures += invalid;
-    statistics.trueGapRungs += rungSolves;
-    statistics.trueGapFallbacks += rungFallbacks;
+  counts.addTo(statistics, model.deepOverlapsExpected);
+}
+
+/// The laws a thread's kernel of one group handed over, their rungs now solved: the rest of the
+/// kernel's work on them, as it would have done it (the law states no stored energy: no ledger).
+template <PairKind Kind>
+void finishDeferred(std::span<const DeferredLaw> laws, const ContactModel& pairModel, const TrueGapLaw& law,
+                    const InteractionScene& scene, ContactStore& s, ContactStatistics& statistics) {
+  static_assert(!StoredEnergyLaw<TrueGapLaw>);
+  const ContactModel model = asRun(pairModel, Kind);
+  KernelCounts counts;
+  for (const DeferredLaw& d : laws) {
+    TrueGapRungs& rungs = s.trueGap[d.contact];
+    const int segment = rungs.segment(d.view.overlap);
+    for (int r = 0; r < 2; ++r) {
+      if (rungs.has(segment + r)) continue;
+      take(rungs, segment + r, d.solutions[r]);
+      counts.rungSolves += rungs.has(segment + r);
+    }
+    ContactHistory history = storedHistory(s, d.contact);
+    LawGeometry view = d.view;
+    handOnRungs(rungs, view, counts.rungFallbacks);
+    double stored = 0.0;
+    const ContactForce force = lawForce<TrueGapLaw, false>(model, law, view, d.motion, history, scene.dt, stored);
+    counts.tally(force, view.overlap, d.motion);
+    record<Kind, false>(scene, s, d.contact, view.normal, view.overlap, d.point, true, history, force, stored);
   }
+  counts.addTo(statistics, model.deepOverlapsExpected);
 }
 
 /// The group's kernel, with the ledger when the store keeps one (only laws that state their
 /// stored energy can: the scene loader refuses the others); round Hertz contacts without it on
 /// the scene's path across contacts (round_hertz_lanes.hpp).
 template <PairKind Kind, NormalLawComponent Law>
-void runGroup(std::span<const std::uint32_t> members, const ContactModel& model, const Law& law,
+void runGroup(std::span<const std::uint32_t> members, std::uint32_t group, const ContactModel& model, const Law& law,
               const InteractionScene& scene, const std::vector<double>& speedBound, std::vector<detail::WarmSkip>* skips,
-              ContactStore& s, ContactStatistics& statistics) {
+              ContactStore& s, std::vector<DeferredLaw>& deferred, ContactStatistics& statistics) {
   if constexpr (StoredEnergyLaw<Law>) {
-    if (s.withEnergy) return groupKernel<Kind, Law, true>(members, model, law, scene, speedBound, skips, s, statistics);
+    if (s.withEnergy) return groupKernel<Kind, Law, true>(members, group, model, law, scene, speedBound, skips, s, deferred, statistics);
   }
   if constexpr (round(Kind) && std::is_same_v<Law, HertzLaw>) {  // several per instruction
     if (scene.simd != SimdPath::Scalar) return detail::roundHertzContacts(scene.simd, Kind, members, asRun(model, Kind), scene, s, statistics);
   }
-  groupKernel<Kind, Law, false>(members, model, law, scene, speedBound, skips, s, statistics);
+  groupKernel<Kind, Law, false>(members, group, model, law, scene, speedBound, skips, s, deferred, statistics);
 }
 
-template <NormalLawComponent Law>
-void runGroup(PairKind kind, std::span<const std::uint32_t> members, const ContactModel& model, const Law& law,
-              const InteractionScene& scene, const std::vector<double>& speedBound, std::vector<detail::WarmSkip>* skips,
-              ContactStore& s, ContactStatistics& statistics) {
-  const auto run = [&]<PairKind Kind>() { runGroup<Kind>(members, model, law, scene, speedBound, skips, s, statistics); };
+/// f.template operator()<Kind>() for the pair kind.
+template <typename F>
+void visitKind(PairKind kind, F&& f) {
   switch (kind) {
-    case PairKind::SphereSphere: return run.template operator()<PairKind::SphereSphere>();
-    case PairKind::EllipsoidPair: return run.template operator()<PairKind::EllipsoidPair>();
-    case PairKind::SuperquadricPair: return run.template operator()<PairKind::SuperquadricPair>();
-    case PairKind::SphereWall: return run.template operator()<PairKind::SphereWall>();
-    case PairKind::ParticleWall: return run.template operator()<PairKind::ParticleWall>();
-    case PairKind::ParticleCylinder: return run.template operator()<PairKind::ParticleCylinder>();
-    case PairKind::ParticleMesh: return run.template operator()<PairKind::ParticleMesh>();
+    case PairKind::SphereSphere: return f.template operator()<PairKind::SphereSphere>();
+    case PairKind::EllipsoidPair: return f.template operator()<PairKind::EllipsoidPair>();
+    case PairKind::SuperquadricPair: return f.template operator()<PairKind::SuperquadricPair>();
+    case PairKind::SphereWall: return f.template operator()<PairKind::SphereWall>();
+    case PairKind::ParticleWall: return f.template operator()<PairKind::ParticleWall>();
+    case PairKind::ParticleCylinder: return f.template operator()<PairKind::ParticleCylinder>();
+    case PairKind::ParticleMesh: return f.template operator()<PairKind::ParticleMesh>();
   }
 }
 
@@ -379,23 +453,77 @@ void Interactions::beginCompute(const InteractionScene& scene) {
   // Each thread's sums of the loads of the wall contacts it computes (reduce).
   threadWallLoads_.resize(static_cast<std::size_t>(omp_get_num_threads()));  // the calling team's (1 outside one)
   for (std::vector<WallLoadSum>& loads : threadWallLoads_) loads.resize(scene.walls.size());
+  deferred_.resize(threadWallLoads_.size());
+  for (std::vector<DeferredLaw>& laws : deferred_) laws.clear();
+  rungClaims_ = 0;
 }
 
 bool Interactions::cullsBySpeed() const {
   return std::ranges::any_of(groups_, [](const Group& g) { return !round(g.kind) && !withWall(g.kind); });
 }
 
+bool Interactions::defersLaws(const InteractionScene& scene) const {
+  return std::ranges::any_of(groups_, [&](const Group& g) {
+    bool waits = false;
+    std::visit([&]<typename Law>(const Law&) { visitKind(g.kind, [&]<PairKind Kind>() { waits = waitsForRungs<Kind, Law>; }); },
+               scene.models[g.model].normal);
+    return waits;
+  });
+}
+
 void Interactions::compute(const InteractionScene& scene, ContactStatistics& statistics) {
   std::vector<detail::WarmSkip>* skips = recording(scene) ? &warmSkips_ : nullptr;
   const std::vector<double>& speedBound = scene.particles.speedBound;
+  std::vector<DeferredLaw>& deferred = deferred_[static_cast<std::size_t>(omp_get_thread_num())];
   // The groups' loops do not wait for each other: each writes only its own contacts.
   const auto owned = static_cast<std::ptrdiff_t>(scene.particles.size());
-  for (const Group& group : groups_) {
+  for (std::uint32_t g = 0; g < groups_.size(); ++g) {
+    const Group& group = groups_[g];
     const ContactModel& model = scene.models[group.model];
     const std::span<const std::uint32_t> members = memberShare(group, owned, scene.split);
-    std::visit([&](const auto& law) { runGroup(group.kind, members, model, law, scene, speedBound, skips, store_, statistics); },
-               model.normal);
-    if (model.bond) addBondLoads(scene, members, *model.bond, statistics);
+    std::visit(
+        [&](const auto& law) {
+          visitKind(group.kind, [&]<PairKind Kind>() {
+            runGroup<Kind>(members, g, model, law, scene, speedBound, skips, store_, deferred, statistics);
+          });
+        },
+        model.normal);
+  }
+}
+
+void Interactions::solveDeferredRungs(const InteractionScene& scene) {
+  std::size_t total = 0;  // entries: rung k and k + 1 of each waiting law
+  for (const std::vector<DeferredLaw>& laws : deferred_) total += 2 * laws.size();
+  std::atomic_ref<std::size_t> next(rungClaims_);
+  for (std::size_t i = next.fetch_add(1, std::memory_order_relaxed); i < total; i = next.fetch_add(1, std::memory_order_relaxed)) {
+    std::size_t t = 0, j = i / 2;
+    for (; j >= deferred_[t].size(); ++t) j -= deferred_[t].size();
+    DeferredLaw& d = deferred_[t][j];
+    const TrueGapRungs& rungs = store_.trueGap[d.contact];  // (read only: the ladder takes the solutions in finishCompute)
+    const int k = rungs.segment(d.view.overlap) + static_cast<int>(i % 2);
+    if (rungs.has(k)) continue;
+    const ContactModel& model = scene.models[groups_[d.group].model];
+    d.solutions[i % 2] = solveRung(rungs, k, d.gap, model.effectiveModulus, std::get<TrueGapLaw>(model.normal).cells);
+  }
+}
+
+void Interactions::finishCompute(const InteractionScene& scene, ContactStatistics& statistics) {
+  const std::vector<DeferredLaw>& deferred = deferred_[static_cast<std::size_t>(omp_get_thread_num())];
+  auto next = deferred.begin();  // (handed over group by group)
+  const auto owned = static_cast<std::ptrdiff_t>(scene.particles.size());
+  for (std::uint32_t g = 0; g < groups_.size(); ++g) {
+    const Group& group = groups_[g];
+    const ContactModel& model = scene.models[group.model];
+    const auto end = std::find_if(next, deferred.end(), [&](const DeferredLaw& d) { return d.group != g; });
+    if (next != end) {
+      visitKind(group.kind, [&]<PairKind Kind>() {
+        if constexpr (waitsForRungs<Kind, TrueGapLaw>) {
+          finishDeferred<Kind>({next, end}, model, std::get<TrueGapLaw>(model.normal), scene, store_, statistics);
+        }
+      });
+    }
+    next = end;
+    if (model.bond) addBondLoads(scene, memberShare(group, owned, scene.split), *model.bond, statistics);
   }
 }
 

@@ -37,7 +37,8 @@ PairGap PairGap::touchingAt(const Superquadric& A, const Superquadric& B, const 
 
 PairGap::PairGap(const PairBody& A, const PairBody& B, const Vec3& origin, const Vec3& normal, const Vec3& t1, double overlap,
                  const RelativeRadii& radii)
-    : A_(A), B_(B), origin_(origin), normal_(normal), t1_(tangent(t1, normal)), t2_(normal.cross(t1_)),
+    : shapeA_(&A.shape), shapeB_(&B.shape), poseA_(A.pose), poseB_(B.pose), origin_(origin), normal_(normal),
+      t1_(tangent(t1, normal)), t2_(normal.cross(t1_)),
       overlap_(overlap), referenceLength_(referenceVolumeRadius(A.shape, B.shape)), quadraticAspect_(std::sqrt(radii.ratio())),
       majorRadius_(radii.Rj) {}
 
@@ -48,8 +49,8 @@ double PairGap::operator()(double x, double y) const {
 
 double PairGap::operator()(double x, double y, Heights& near, double distance) const {
   const Vec3 q = origin_ + x * t1_ + y * t2_;
-  near.top = surfaceFarthestAlong(A_.shape, A_.pose, q, normal_, near.top + distance);
-  near.bottom = -surfaceFarthestAlong(B_.shape, B_.pose, q, -normal_, distance - near.bottom);
+  near.top = surfaceFarthestAlong(*shapeA_, poseA_, q, normal_, near.top + distance);
+  near.bottom = -surfaceFarthestAlong(*shapeB_, poseB_, q, -normal_, distance - near.bottom);
   return near.bottom - near.top + overlap_;  // +infinity where a line misses a body
 }
 

@@ -1,6 +1,6 @@
 #include "sqdem/truegap/true_gap_rungs.hpp"
 
-#include <stdexcept>
+#include <exception>
 
 #include "sqdem/truegap/pair_contact.hpp"
 
@@ -21,17 +21,28 @@ TrueGapRungs trueGapLadder(const Superquadric& A, const Superquadric& B) {
   return rungs;
 }
 
+RungSolution solveRung(const TrueGapRungs& rungs, int k, const PairGap& gap, double effectiveModulus, int cells) {
+  try {
+    const HalfspaceContact c = gapContact(gap, rungs.overlap(k), effectiveModulus, cells, rungTolerance);
+    return {c.force, c.area};
+  } catch (const std::exception&) {  // (inside the engine's parallel loops: nothing may escape)
+    return {};
+  }
+}
+
+void take(TrueGapRungs& rungs, int k, const RungSolution& solution) {
+  if (solution.failed()) {
+    rungs.fail(k);
+  } else {
+    rungs.set(k, solution.force, solution.area);
+  }
+}
+
 bool solveRungs(TrueGapRungs& rungs, const PairGap& gap, double effectiveModulus, int cells, int first, int last) {
   for (int k = first; k <= last; ++k) {
     if (rungs.has(k)) continue;
-    try {
-      const HalfspaceContact c = gapContact(gap, rungs.overlap(k), effectiveModulus, cells, rungTolerance);
-      if (!(c.force > 0.0 && c.area > 0.0)) throw std::runtime_error("no cell in contact");
-      rungs.set(k, c.force, c.area);
-    } catch (const std::exception&) {  // (inside the engine's parallel loops: nothing may escape)
-      rungs.fail(k);
-      return false;
-    }
+    take(rungs, k, solveRung(rungs, k, gap, effectiveModulus, cells));
+    if (rungs.failed(k)) return false;
   }
   return true;
 }

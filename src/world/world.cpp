@@ -289,9 +289,18 @@ void World::forcePhases(Team& team, double halfStep) {
     }
     team.barrier();
   }
-  const auto computing = Clock::now();
-  interactions_.compute(interactionScene(), statistics_);
-  team.addWork(seconds(Clock::now() - computing));
+  const InteractionScene scene = interactionScene();
+  auto computing = Clock::now();
+  interactions_.compute(scene, statistics_);
+  double work = seconds(Clock::now() - computing);
+  if (interactions_.defersLaws(scene)) {  // the rungs solved by the whole team, outside the threads' shares of work
+    team.barrier();
+    interactions_.solveDeferredRungs(scene);
+    team.barrier();
+  }
+  computing = Clock::now();
+  interactions_.finishCompute(scene, statistics_);
+  team.addWork(work + seconds(Clock::now() - computing));
   team.barrier();
   const bool ranks = communicator_->size() > 1;
   team.master([&] {

@@ -23,6 +23,7 @@
 #include "sqdem/geometry/superquadric.hpp"
 #include "sqdem/interaction/contact_model.hpp"
 #include "sqdem/interaction/contact_store.hpp"
+#include "sqdem/interaction/deferred_law.hpp"
 #include "sqdem/interaction/pair_kind.hpp"
 #include "sqdem/interaction/simd_path.hpp"
 #include "sqdem/interaction/thread_share.hpp"
@@ -181,7 +182,17 @@ class Interactions {
   void beginCompute(const InteractionScene& scene);
   /// Team work: detection and laws of every candidate; adds to the statistics. The particles'
   /// speed bounds (ParticleStore::speedBound, ghosts too) must be current when cullsBySpeed().
+  /// A law waiting for its true-gap rungs is handed over (deferred_law.hpp): the computation
+  /// ends with finishCompute, after solveDeferredRungs between two barriers when defersLaws().
   void compute(const InteractionScene& scene, ContactStatistics& statistics);
+  /// Whether some group's law may wait for rungs (the true-gap law on particle pairs).
+  bool defersLaws(const InteractionScene& scene) const;
+  /// Team work, after compute and a barrier: the rungs every thread's kernels wait for, each
+  /// taken from one queue by whichever thread is free (into the waiting law's record).
+  void solveDeferredRungs(const InteractionScene& scene);
+  /// Team work, after compute (and the rungs' barrier): the laws this thread handed over, their
+  /// rungs entered into the ladders, then its share's bond loads.
+  void finishCompute(const InteractionScene& scene, ContactStatistics& statistics);
   /// Bonds formed (docs/bonds.md) between the stored pairs whose model has one, where a pair's
   /// gap is at most gapRatio times the smaller volume radius (a particle's own on a plane; not
   /// on a cylinder or a mesh), at the middle of the common-normal points; returns how many.
@@ -287,6 +298,8 @@ class Interactions {
   mutable bool interactingListed_ = false;
   std::vector<std::vector<WallLoadSum>> threadWallLoads_;  ///< per thread, per wall (reduce)
   std::vector<detail::WarmSkip> warmSkips_;      ///< by store slot (warm_skip.hpp); empty without particle pairs to solve
+  std::vector<std::vector<DeferredLaw>> deferred_;  ///< per thread: the laws its kernels handed over (compute)
+  std::size_t rungClaims_ = 0;                   ///< solveDeferredRungs' next entry, taken atomically
 };
 
 }  // namespace sqdem

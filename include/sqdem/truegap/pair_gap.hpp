@@ -65,7 +65,8 @@ class PairGap {
   PairGap(const PairBody& A, const PairBody& B, const Vec3& origin, const Vec3& normal, const Vec3& t1, double overlap,
           const RelativeRadii& radii);
 
-  PairBody A_, B_;
+  const Superquadric *shapeA_, *shapeB_;  // (pointers: a gap is assignable, as the engine's records are)
+  Pose poseA_, poseB_;
   Vec3 origin_, normal_, t1_, t2_;
   double overlap_, referenceLength_, quadraticAspect_, majorRadius_;
 };
