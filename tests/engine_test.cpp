@@ -148,7 +148,7 @@ TEST(Engine, RestingBedWallForceEqualsWeight) {
 // A checkpoint restores the state so that the continuation is bitwise identical.
 TEST(Engine, CheckpointRestartContinuesBitwise) {
   const Scene scene = loadScene(writeScene("bed", bedScene));
-  World original = pouredBed(scene, 50.0, 20000);
+  World original = pouredBed(scene, 50.0, 30000);
   CheckpointWriter checkpoint;
   original.writeState(checkpoint);
   for (int s = 0; s < 5000; ++s) original.step();

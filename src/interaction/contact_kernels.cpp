@@ -292,10 +292,10 @@ void record(const InteractionScene& scene, ContactStore& s, std::uint32_t k, con
   }
 }
 
-/// Whether a group's laws may wait for true-gap rungs (DeferredLaw): the law's on particle pairs
-/// that are solved (walls keep elliptic Hertz, round kinds take no rungs).
+/// Whether a group's laws may wait for true-gap rungs (DeferredLaw): the law's on superquadric
+/// pairs (walls keep elliptic Hertz; two ellipsoids take it too, the blend's weight 0).
 template <PairKind Kind, typename Law>
-constexpr bool waitsForRungs = std::is_same_v<Law, TrueGapLaw> && !round(Kind) && !withWall(Kind);
+constexpr bool waitsForRungs = std::is_same_v<Law, TrueGapLaw> && Kind == PairKind::SuperquadricPair;
 
 /// One group: detect, then (within the law's range) the law; the step's statistics; with the
 /// Ledger, each contact's energy (ContactEnergy). Every thread of the team runs it on its own
@@ -396,7 +396,7 @@ void finishDeferred(std::span<const DeferredLaw> laws, const ContactModel& pairM
   for (const DeferredLaw& d : laws) {
     TrueGapRungs& rungs = s.trueGap[d.contact];
     const int segment = rungs.segment(d.view.overlap);
-    for (int r = 0; r < 2; ++r) {
+    for (int r = 0; r < 2 && !rungs.failed(segment); ++r) {  // (past a failed rung none taken, as solveRungs)
       if (rungs.has(segment + r)) continue;
       take(rungs, segment + r, d.solutions[r]);
       counts.rungSolves += rungs.has(segment + r);
@@ -508,7 +508,7 @@ void Interactions::solveDeferredRungs(const InteractionScene& scene) {
 }
 
 void Interactions::finishCompute(const InteractionScene& scene, ContactStatistics& statistics) {
-  const std::vector<DeferredLaw>& deferred = deferred_[static_cast<std::size_t>(omp_get_thread_num())];
+  std::vector<DeferredLaw>& deferred = deferred_[static_cast<std::size_t>(omp_get_thread_num())];
   auto next = deferred.begin();  // (handed over group by group)
   const auto owned = static_cast<std::ptrdiff_t>(scene.particles.size());
   for (std::uint32_t g = 0; g < groups_.size(); ++g) {
@@ -525,6 +525,7 @@ void Interactions::finishCompute(const InteractionScene& scene, ContactStatistic
     next = end;
     if (model.bond) addBondLoads(scene, memberShare(group, owned, scene.split), *model.bond, statistics);
   }
+  deferred.clear();  // (its gaps point at the scene's shapes: none kept past the computation)
 }
 
 }  // namespace sqdem
