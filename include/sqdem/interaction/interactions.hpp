@@ -185,7 +185,7 @@ class Interactions {
   /// A law waiting for its true-gap rungs is handed over (deferred_law.hpp): the computation
   /// ends with finishCompute, after solveDeferredRungs between two barriers when defersLaws().
   void compute(const InteractionScene& scene, ContactStatistics& statistics);
-  /// Whether some group's law may wait for rungs (the true-gap law on particle pairs).
+  /// Whether some group's law may wait for rungs (the true-gap law on superquadric pairs).
   bool defersLaws(const InteractionScene& scene) const;
   /// Team work, after compute and a barrier: the rungs every thread's kernels wait for, each
   /// taken from one queue by whichever thread is free (into the waiting law's record).
