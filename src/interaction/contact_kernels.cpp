@@ -178,9 +178,9 @@ LawGeometry cachedLawGeometry(const InteractionScene& scene, const ContactModel&
 bool rungsWait(TrueGapRungs& rungs, const Superquadric& A, const Superquadric& B, bool cached, double overlap) {
   if (rungs.length == 0.0) rungs = trueGapLadder(A, B);
   if (!cached) rungs.forget();
-  if (rungs.weight == 0.0 || !(overlap > 0.0)) return false;
+  if (rungs.holds(overlap)) return false;
   const int segment = rungs.segment(overlap);
-  return !(rungs.has(segment) && rungs.has(segment + 1)) && !rungs.failed(segment) && !rungs.failed(segment + 1);
+  return !rungs.failed(segment) && !rungs.failed(segment + 1);
 }
 
 /// The pose contact k's rungs are solved on: the one its curvature cache keeps (its points and
@@ -200,9 +200,7 @@ PairGap rungPose(const InteractionScene& scene, const ContactStore& s, std::uint
 /// refreshed.
 void handOnRungs(const TrueGapRungs& rungs, LawGeometry& view, long long& fallbacks) {
   view.contact.trueGap = &rungs;
-  if (rungs.weight == 0.0 || !(view.overlap > 0.0)) return;
-  const int segment = rungs.segment(view.overlap);
-  if (rungs.has(segment) && rungs.has(segment + 1)) return;
+  if (rungs.holds(view.overlap)) return;
   view.contact.trueGap = nullptr;
   ++fallbacks;
 }

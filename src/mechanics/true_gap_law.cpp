@@ -15,6 +15,12 @@ int TrueGapRungs::segment(double delta) const {
   return std::clamp(static_cast<int>(std::floor(std::log2(delta / length))), lowest, lowest + count - 2);
 }
 
+bool TrueGapRungs::holds(double delta) const {
+  if (weight == 0.0 || !(delta > 0.0)) return true;
+  const int k = segment(delta);
+  return has(k) && has(k + 1);
+}
+
 void TrueGapRungs::set(int k, double rungForce, double rungArea) {
   if (!(rungForce > 0.0 && rungArea > 0.0)) throw std::invalid_argument("TrueGapRungs::set: a rung's force and area must be > 0");
   force[k - lowest] = rungForce;
@@ -42,11 +48,11 @@ TrueGapLaw TrueGapLaw::read(const LawInput& in, const PairElasticity&) {
 
 namespace {
 
-/// The weight of the rungs handed on: 0 (elliptic Hertz) without them or where the ones from
-/// `first` to `last` are not all solved.
-double solvedWeight(const TrueGapRungs* rungs, int first, int last) {
+/// The weight of the rungs handed on: 0 (elliptic Hertz) without them or where the ones up to
+/// `last` are not all solved.
+double solvedWeight(const TrueGapRungs* rungs, int last) {
   if (rungs == nullptr) return 0.0;
-  for (int k = first; k <= last; ++k) {
+  for (int k = TrueGapRungs::lowest; k <= last; ++k) {
     if (!rungs->has(k)) return 0.0;
   }
   return rungs->weight;
@@ -56,13 +62,12 @@ double solvedWeight(const TrueGapRungs* rungs, int first, int last) {
 
 NormalResponse TrueGapLaw::force(const NormalContact& c, double overlap, History&) const {
   if (!(overlap > 0.0)) return {.acting = false};
-  const int segment = c.trueGap != nullptr ? c.trueGap->segment(overlap) : 0;
-  const double w = solvedWeight(c.trueGap, segment, segment + 1);
+  const double w = c.trueGap != nullptr && c.trueGap->holds(overlap) ? c.trueGap->weight : 0.0;
   HertzLaw::History none;
   const NormalResponse hertz = w < 1.0 ? HertzLaw{}.force(c, overlap, none) : NormalResponse{};
   if (w == 0.0) return hertz;
   const TrueGapRungs& r = *c.trueGap;
-  const int k = segment, i = k - TrueGapRungs::lowest;
+  const int k = r.segment(overlap), i = k - TrueGapRungs::lowest;
   const double s = overlap / r.overlap(k), m = std::log2(r.force[i + 1] / r.force[i]), force = r.force[i] * std::pow(s, m);
   const double area = r.area[i] * std::pow(s, std::log2(r.area[i + 1] / r.area[i]));
   return {.force = (1.0 - w) * hertz.force + w * force,
@@ -73,7 +78,7 @@ NormalResponse TrueGapLaw::force(const NormalContact& c, double overlap, History
 double TrueGapLaw::energy(const NormalContact& c, double overlap) const {
   if (!(overlap > 0.0)) return 0.0;
   const int top = c.trueGap != nullptr ? c.trueGap->segment(overlap) : 0;
-  const double w = solvedWeight(c.trueGap, TrueGapRungs::lowest, top + 1);
+  const double w = solvedWeight(c.trueGap, top + 1);
   HertzLaw::History none;
   const double hertz = w < 1.0 ? 0.4 * HertzLaw{}.force(c, overlap, none).force * overlap : 0.0;  // 2/5 F delta (hertz_law.hpp)
   if (w == 0.0) return hertz;

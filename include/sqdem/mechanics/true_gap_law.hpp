@@ -45,6 +45,9 @@ struct TrueGapRungs {
   int segment(double overlap) const;
   bool has(int k) const { return (solved >> (k - lowest)) & 1u; }
   bool failed(int k) const { return (failures >> (k - lowest)) & 1u; }
+  /// Whether the law at `overlap` has every rung it needs: none (w = 0, or no overlap), or both
+  /// of the overlap's segment.
+  bool holds(double overlap) const;
   /// Rung k solved: force (N) and area (m^2) > 0.
   void set(int k, double rungForce, double rungArea);
   void fail(int k) { failures |= 1u << (k - lowest); }
