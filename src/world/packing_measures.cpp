@@ -61,9 +61,16 @@ PlateMeasures measurePlate(const World& world, std::size_t plate) {
   return m;
 }
 
-double equivalentBedHeight(const World& world, double bottom) {
+namespace {
+
+/// The particles' volume (m^3) and equivalentBedHeight, from one pass of exact sums reduced
+/// over the ranks.
+struct BedVolume {
+  double volume = 0.0, equivalentHeight = 0.0;
+};
+
+BedVolume bedVolume(const World& world, double bottom) {
   // A uniform bed of height H has its volume centroid at H/2.
-  const Communicator& ranks = world.communicator();
   const ParticleStore& p = world.particles();
   std::array<ExactSum, 2> sums;  // volumes, volume x height
   for (std::size_t i = 0; i < p.size(); ++i) {
@@ -71,9 +78,13 @@ double equivalentBedHeight(const World& world, double bottom) {
     sums[0].add(v);
     sums[1].add(v * (p.position[i].z() - bottom));
   }
-  ranks.sum(sums);
-  return 2.0 * sums[1].value() / sums[0].value();
+  world.communicator().sum(sums);
+  return {sums[0].value(), 2.0 * sums[1].value() / sums[0].value()};
 }
+
+}  // namespace
+
+double equivalentBedHeight(const World& world, double bottom) { return bedVolume(world, bottom).equivalentHeight; }
 
 PackingMeasures measurePacking(const World& world) {
   // Every sum exact and reduced over the ranks (communicator.hpp): the same bits at any
@@ -86,18 +97,16 @@ PackingMeasures measurePacking(const World& world) {
   const Domain& d = world.domain();
   const double bottom = d.lo.z();
   double top = bottom;
-  std::array<ExactSum, 2> sums;  // volume-equivalent radii, volumes
+  ExactSum radii;  // volume-equivalent
   for (std::size_t i = 0; i < p.size(); ++i) {
     const Superquadric& s = world.shapes()[p.shape[i]];
     top = std::max(top, p.position[i].z() + s.boundingRadius());
-    sums[0].add(s.volumeEquivalentRadius());
-    sums[1].add(s.volume());
+    radii.add(s.volumeEquivalentRadius());
   }
-  ranks.sum(sums);
+  const double meanRadius = ranks.sum(radii) / static_cast<double>(count);
   top = ranks.max(top);
-  const double meanRadius = sums[0].value() / static_cast<double>(count), volumeTotal = sums[1].value();
   m.bedHeight = top - bottom;
-  const double equivalentHeight = equivalentBedHeight(world, bottom);
+  const auto [volumeTotal, equivalentHeight] = bedVolume(world, bottom);
   double lo = bottom + 2.0 * meanRadius, hi = bottom + equivalentHeight - 2.0 * meanRadius;
   if (hi - lo < 2.0 * meanRadius) lo = bottom, hi = top;
   ExactSum volume;
