@@ -111,7 +111,7 @@ void printSummary(const World& world, const RunReport& report, double wall, cons
       const CompressionSummary& c = presses[n];
       std::printf("compression%s: peak plate pressure %.4g MPa; coating thickness before %.4g um (porosity %.4f), at the peak "
                   "%.4g um (%.4f), after %.4g um (%.4f)%s; springback %.2f %%, permanent compression %.2f %%\n",
-                  presses.size() > 1 ? (" " + std::to_string(n + 1)).c_str() : "", c.peakPressure / 1e6, c.thicknessBefore * 1e6,
+                  presses.size() > 1 ? std::string(" ").append(std::to_string(n + 1)).c_str() : "", c.peakPressure / 1e6, c.thicknessBefore * 1e6,
                   c.porosityBefore, c.thicknessAtPeak * 1e6, c.porosityAtPeak, c.thicknessAfter * 1e6, c.porosityAfter,
                   c.released ? "" : " (the plate never let go: the last gap)", 100.0 * c.springback(), 100.0 * c.permanentCompression());
     }

@@ -363,7 +363,7 @@ void groupKernel(std::span<const std::uint32_t> members, std::uint32_t group, co
         if constexpr (waitsForRungs<Kind, Law>) {
           const ParticleStore& p = scene.particles;
           if (rungsWait(s.trueGap[k], scene.shapes[p.shape[s.a[k]]], scene.shapes[p.shape[s.b[k]]], cached, view.overlap)) {
-            deferred.push_back({k, group, view, motion, point, rungPose(scene, s, k, cached, g)});
+            deferred.push_back({k, group, view, motion, point, rungPose(scene, s, k, cached, g), {}});
             continue;  // its law and record: finishDeferred's
           }
           handOnRungs(s.trueGap[k], view, counts.rungFallbacks);
