@@ -104,12 +104,14 @@ std::string lawNames(bool (*pick)(const NormalLawEntry&)) {
   return out;
 }
 
-const NormalLawEntry& normalLaw(std::string_view name, const LawInput& in, std::string_view key) {
+const NormalLawEntry& normalLaw(std::string_view name, const LawInput& in, std::string_view key,
+                                std::span<const std::string_view> alsoAllowed) {
   std::vector<std::string_view> names;
   for (const NormalLawEntry& e : entries) {
     if (e.name == name) return e;
     names.push_back(e.name);
   }
+  names.insert(names.end(), alsoAllowed.begin(), alsoAllowed.end());
   in.fail(key, "unknown law '" + std::string(name) + "' (allowed: " + joinKeys(names) + ")");
 }
 

@@ -1,5 +1,6 @@
 #include "sqdem/probe/driven_law.hpp"
 
+#include <array>
 #include <cmath>
 #include <stdexcept>
 
@@ -24,7 +25,9 @@ DrivenLaw::DrivenLaw(const json& law, const std::string& where, const RelativeRa
                                : method == "explicit" ? EccentricityMethod::Explicit
                                                       : EccentricityMethod::Tabulated;
   if (!law.contains("type") || !law["type"].is_string()) input.fail("type", "must name a law");
-  const NormalLawEntry& entry = normalLaw(law["type"].get<std::string>(), input, "type");
+  // (the driver's boundary-element reference is no law of the registry: contact_drive.cpp)
+  static constexpr std::array<std::string_view, 1> alsoDriven{"boundary_element"};
+  const NormalLawEntry& entry = normalLaw(law["type"].get<std::string>(), input, "type", alsoDriven);
   if (!entry.curvatures) {
     input.fail("type", "volume_sphere_hertz is Hertz on the volume-equivalent spheres, which the driver does not "
                        "take: it drives a law on the pair's relative radii (given, or the particles' curvatures); for "

@@ -66,8 +66,10 @@ struct NormalLawEntry {
 std::span<const NormalLawEntry> normalLaws();
 /// The names of the registered laws `pick` chooses, as "a, b or c" (for messages).
 std::string lawNames(bool (*pick)(const NormalLawEntry&));
-/// The entry named `name`; `in.fail(key, ...)` listing the names when there is none.
-const NormalLawEntry& normalLaw(std::string_view name, const LawInput& in, std::string_view key);
+/// The entry named `name`; `in.fail(key, ...)` listing the names when there is none, and after
+/// them `alsoAllowed`: the laws the caller takes outside the registry.
+const NormalLawEntry& normalLaw(std::string_view name, const LawInput& in, std::string_view key,
+                                std::span<const std::string_view> alsoAllowed = {});
 /// The law of `entry` from `in`: every key present must be the source's or the law's (a key of
 /// another law is named as such), then the law validates its values.
 NormalLaw readNormalLaw(const NormalLawEntry& entry, const LawInput& in, const PairElasticity& pair);
