@@ -19,6 +19,7 @@
 
 #include <omp.h>
 
+#include "sqdem/mechanics/bond_frame.hpp"
 #include "sqdem/mechanics/hertz_law.hpp"
 #include "sqdem/truegap/pair_contact.hpp"
 #include "sqdem/truegap/true_gap_curve.hpp"
@@ -176,10 +177,9 @@ TEST(TrueGapLaw, RollingAFaceOntoAnEdgeIsContinuous) {
   }
 }
 
-/// The normal force of the engine's contact between two bodies of `shape` at poses A (origin,
-/// identity) and `poseB` under `law` (E = 1 GPa, nu = 0.3, no friction), on `threads` threads,
-/// computed `times` times at the same pose: the rungs of the first are kept (none solved after it).
-double engineForce(const Superquadric& shape, const Pose& poseB, const NormalLaw& law, int threads, int times = 1) {
+/// Two bodies of `shape` at poses A (origin, identity) and `poseB` under `law` (E = 1 GPa,
+/// nu = 0.3, no friction), with `bond` between them when it has a stiffness, on `threads` threads.
+World pairWorld(const Superquadric& shape, const Pose& poseB, const NormalLaw& law, int threads, const ParallelBond& bond = {}) {
   omp_set_num_threads(threads);
   Domain box;
   box.lo = Vec3::Constant(-10.0);
@@ -188,10 +188,18 @@ double engineForce(const Superquadric& shape, const Pose& poseB, const NormalLaw
   ContactModel model = world.defaultContactModel(0, 0);
   model.normal = law;
   model.eccentricity = EccentricityMethod::Exact;
+  if (bond.normalStiffness > 0.0) model.bond = bond;
   world.setContactModel(0, 0, model);
   world.addParticle(0, 0, Vec3::Zero(), Quat::Identity());
   world.addParticle(0, 0, poseB.position, poseB.orientation);
   world.setTimeStep(1e-6);
+  return world;
+}
+
+/// The normal force of the engine's contact in pairWorld, computed `times` times at the same
+/// pose: the rungs of the first are kept (none solved after it).
+double engineForce(const Superquadric& shape, const Pose& poseB, const NormalLaw& law, int threads, int times = 1) {
+  World world = pairWorld(shape, poseB, law, threads);
   world.computeForces();
   const long long rungs = world.totalStatistics().trueGapRungs;
   for (int k = 1; k < times; ++k) world.computeForces();
@@ -199,6 +207,12 @@ double engineForce(const Superquadric& shape, const Pose& poseB, const NormalLaw
   double force = 0.0;
   for (const ContactView c : world.contacts()) force = c.normalLoad().force;
   return force;
+}
+
+/// The force on B (Newtons) of the pair in pairWorld.
+Vec3 forceOnB(const World& world) {
+  const ParticleStore& p = world.particles();
+  return p.id[0] == 1 ? p.force[0] : p.force[1];
 }
 
 // The law in the engine (interaction/contact_kernels.cpp): its rungs solved on the pose the
@@ -222,6 +236,43 @@ TEST(TrueGapLaw, TheEngineSolvesTheSameLaw) {
   const double hertz = engineForce(ellipsoid, touching, HertzLaw{}, 1);
   EXPECT_GT(hertz, 0.0);
   EXPECT_EQ(engineForce(ellipsoid, touching, TrueGapLaw{}, 1), hertz);
+}
+
+// A bond beside the law (docs/bonds.md; docs/architecture.md, "A step": the law waits for its
+// rungs, solved by the team after the kernels, and its group's bonds are loaded in the same
+// completion, Interactions::finishCompute): the pair of
+// Table 1 case 2 (a face on an edge, delta / R_vol = 1e-3) bonded where it is, then B pressed
+// further by u along the contact normal n, feels the unbonded pair's force at that pose plus the
+// bond's compression k_n A u n (Potyondy & Cundall 2004, Eq. 10; A = pi (lambda R_vol)^2, the bond
+// turned by nothing); the same bits on one thread and on two.
+TEST(TrueGapLaw, ABondsLoadAddsToTheLaws) {
+  const Superquadric shape = table1Shape();
+  const Table1Result r = runTable1Case(table1Cases[1], 1e-3);
+  const double R = shape.volumeEquivalentRadius(), u = 1e-4 * R;
+  const ParallelBond bond{.radiusMultiplier = 0.5, .normalStiffness = 1e9, .shearStiffness = 4e8, .tensileStrength = 1e30,
+                          .shearStrength = 1e30};
+  const BondSection section(bond.radiusMultiplier * R);
+  const Vec3 n = r.contact.normal, load = bond.normalStiffness * section.area * u * n;  // on B, away from A
+  // Formed (or not) at the pose, then pressed: the same detections, caches and rungs either way.
+  const auto pressedForce = [&](int threads, bool bonded) {
+    World world = pairWorld(shape, r.second, TrueGapLaw{}, threads, bonded ? bond : ParallelBond{});
+    if (bonded) EXPECT_EQ(world.formBonds(0.01), 1u);
+    world.computeForces();
+    for (std::size_t i = 0; i < 2; ++i) {
+      if (world.particles().id[i] == 1) world.particles().position[i] -= u * n;
+    }
+    world.computeForces();
+    EXPECT_GT(world.totalStatistics().trueGapRungs, 0);
+    EXPECT_EQ(world.totalStatistics().trueGapFallbacks, 0);
+    return forceOnB(world);
+  };
+  const Vec3 law = pressedForce(1, false);
+  const std::vector<Vec3> bonded{pressedForce(1, true), pressedForce(2, true)};
+  std::printf("the law on B %.9e N, the bond's k_n A u %.9e N, bonded - unbonded - bond: %.2e N\n", law.norm(), load.norm(),
+              (bonded[0] - law - load).norm());
+  EXPECT_GT(load.norm(), 0.3 * law.norm());
+  EXPECT_LT((bonded[0] - law - load).norm(), 1e-9 * (law.norm() + load.norm()));
+  EXPECT_EQ(bonded[0], bonded[1]);
 }
 
 }  // namespace
