@@ -16,9 +16,7 @@ int TrueGapRungs::segment(double delta) const {
 }
 
 bool TrueGapRungs::holds(double delta) const {
-  if (weight == 0.0 || !(delta > 0.0)) return true;
-  const int k = segment(delta);
-  return has(k) && has(k + 1);
+  return weight == 0.0 || !(delta > 0.0) || hasSegment(segment(delta));
 }
 
 void TrueGapRungs::set(int k, double rungForce, double rungArea) {
@@ -62,12 +60,12 @@ double solvedWeight(const TrueGapRungs* rungs, int last) {
 
 NormalResponse TrueGapLaw::force(const NormalContact& c, double overlap, History&) const {
   if (!(overlap > 0.0)) return {.acting = false};
-  const double w = c.trueGap != nullptr && c.trueGap->holds(overlap) ? c.trueGap->weight : 0.0;
+  const int k = c.trueGap != nullptr ? c.trueGap->segment(overlap) : 0, i = k - TrueGapRungs::lowest;
+  const double w = c.trueGap != nullptr && c.trueGap->hasSegment(k) ? c.trueGap->weight : 0.0;
   HertzLaw::History none;
   const NormalResponse hertz = w < 1.0 ? HertzLaw{}.force(c, overlap, none) : NormalResponse{};
   if (w == 0.0) return hertz;
   const TrueGapRungs& r = *c.trueGap;
-  const int k = r.segment(overlap), i = k - TrueGapRungs::lowest;
   const double s = overlap / r.overlap(k), m = std::log2(r.force[i + 1] / r.force[i]), force = r.force[i] * std::pow(s, m);
   const double area = r.area[i] * std::pow(s, std::log2(r.area[i + 1] / r.area[i]));
   return {.force = (1.0 - w) * hertz.force + w * force,

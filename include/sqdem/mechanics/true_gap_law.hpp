@@ -45,6 +45,8 @@ struct TrueGapRungs {
   int segment(double overlap) const;
   bool has(int k) const { return (solved >> (k - lowest)) & 1u; }
   bool failed(int k) const { return (failures >> (k - lowest)) & 1u; }
+  /// Whether both rungs of segment k are solved.
+  bool hasSegment(int k) const { return has(k) && has(k + 1); }
   /// Whether the law at `overlap` has every rung it needs: none (w = 0, or no overlap), or both
   /// of the overlap's segment.
   bool holds(double overlap) const;
