@@ -209,11 +209,8 @@ double engineForce(const Superquadric& shape, const Pose& poseB, const NormalLaw
   return force;
 }
 
-/// The force on B (Newtons) of the pair in pairWorld.
-Vec3 forceOnB(const World& world) {
-  const ParticleStore& p = world.particles();
-  return p.id[0] == 1 ? p.force[0] : p.force[1];
-}
+/// The slot of B (id 1) in pairWorld.
+std::size_t slotOfB(const World& world) { return world.particles().id[0] == 1 ? 0 : 1; }
 
 // The law in the engine (interaction/contact_kernels.cpp): its rungs solved on the pose the
 // curvature cache keeps, rebuilt in A's frame, give the force of the law at the pair's own pose
@@ -260,14 +257,12 @@ TEST(TrueGapLaw, ABondsLoadAddsToTheLaws) {
     World world = pairWorld(shape, r.second, TrueGapLaw{}, threads, bonded ? bond : ParallelBond{});
     if (bonded) EXPECT_EQ(world.formBonds(0.01), 1u);
     world.computeForces();
-    for (std::size_t i = 0; i < 2; ++i) {
-      if (world.particles().id[i] == 1) world.particles().position[i] -= u * n;
-    }
+    world.particles().position[slotOfB(world)] -= u * n;
     const long long solved = world.totalStatistics().trueGapRungs;
     world.computeForces();
     EXPECT_GT(world.totalStatistics().trueGapRungs, solved);  // a law handed over, completed beside the bond
     EXPECT_EQ(world.totalStatistics().trueGapFallbacks, 0);
-    return forceOnB(world);
+    return world.particles().force[slotOfB(world)];
   };
   const Vec3 law = pressedForce(1, false);
   const std::vector<Vec3> bonded{pressedForce(1, true), pressedForce(2, true)};
