@@ -18,10 +18,11 @@
 //           against the reference run's: for true_gap the run at curvature tolerance 1e-4, the
 //           tightest that runs in minutes (at 0 each contact-step solves two rungs of ~1 ms);
 //   rungs   the true-gap rungs solved per 1000 detector calls in the timed run.
-// usage: bench_accuracy <bed.yaml> [steps, default 1000] [table.tsv] [settle, s]
+// usage: bench_accuracy <bed.yaml> [steps, default 1000] [table.tsv] [settle, s] [only]
 //   (bench/scenes/bed_ellipsoid.yaml, bed_sq6.yaml; bench/run_accuracy.sh runs both and plots);
 //   settle: how long the bed settles before the variants, instead of the scene's stages (its
-//   beds still collapse after their 0.15 s; 0.4 s gives them at rest).
+//   beds still collapse after their 0.15 s; 0.4 s gives them at rest); only: run just the
+//   variants whose name contains this text, and the bulk references their drifts need.
 
 #include <omp.h>
 
@@ -114,7 +115,8 @@ Bulk bulk(const World& world) {
 
 int main(int argc, char** argv) {
   if (argc < 2) {
-    std::fprintf(stderr, "usage: bench_accuracy <bed.yaml> [steps, default 1000] [table.tsv] [settle, s: default the scene's stages]\n");
+    std::fprintf(stderr, "usage: bench_accuracy <bed.yaml> [steps, default 1000] [table.tsv] [settle, s: default the scene's stages]"
+                         " [only: variants whose name contains this]\n");
     return 2;
   }
   int steps = 1000;
@@ -196,9 +198,12 @@ int main(int argc, char** argv) {
   }
   std::printf("%-32s %12s %12s %10s %10s %10s %12s %12s %12s %10s\n", "variant", "us/p-step", "us/p/ms", "F err med",
               "F err p99", "F err max", "d(phi)", "d(Z)", "d(p)/p", "rungs/kdc");
+  const std::string only = argc > 5 ? argv[5] : "";
   Bulk referenceBulk{};
   for (std::size_t i = 0; i < variants.size(); ++i) {
     const Variant& v = variants[i];
+    const bool bulkReference = i == 0 || i == firstTrueGap;
+    if (!bulkReference && v.name.find(only) == std::string::npos) continue;
     // The same (deterministic) run timingRepeats times; its cost is the fastest of them.
     const int n = static_cast<int>(std::lround(steps / v.settings.timeStepFactor));
     World start = settled;
@@ -232,7 +237,7 @@ int main(int argc, char** argv) {
       if (!exact.count(key)) errors.push_back(1.0);
     }
     const Bulk b = bulk(w);
-    if (i == 0 || i == firstTrueGap) referenceBulk = b;
+    if (bulkReference) referenceBulk = b;
     const double perStep = 1e6 * seconds / (static_cast<double>(n - 1) * w.particles().size());
     const double perMs = perStep * 1e-3 / w.timeStep();
     const double dPhi = b.solidFraction - referenceBulk.solidFraction, dZ = b.coordination - referenceBulk.coordination;
