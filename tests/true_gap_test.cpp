@@ -23,6 +23,7 @@
 #include "sqdem/mechanics/hertz_law.hpp"
 #include "sqdem/truegap/pair_contact.hpp"
 #include "sqdem/truegap/true_gap_curve.hpp"
+#include "sqdem/truegap/true_gap_rungs.hpp"
 #include "sqdem/validation/table1.hpp"
 #include "sqdem/world/world.hpp"
 #include "support/posed_pair.hpp"
@@ -271,6 +272,73 @@ TEST(TrueGapLaw, ABondsLoadAddsToTheLaws) {
   EXPECT_GT(load.norm(), 0.3 * law.norm());
   EXPECT_LT((bonded[0] - law - load).norm(), 1e-9 * (law.norm() + load.norm()));
   EXPECT_EQ(bonded[0], bonded[1]);
+}
+
+// The rungs under a turn (docs/contact_laws.md, "The true-gap law"; TrueGapRungs::holdAfterTurning):
+// the pair of Table 1 case 2 (a face on an edge, delta / R_vol = 1e-3, curvature tolerance 1e-2)
+// turned through the contact. A tilt theta about the rungs' plane axis t1 (the contact ellipse's
+// major axis, along the edge: a roll of the edge on the face) changes the gap across the contact
+// by up to theta r2, r2 the contact's reach along t2 at the overlap segment's upper rung (the
+// 16-cell rung's solution on the pair's gap, as the engine solves it). At half the critical tilt
+// tol delta / r2 the rungs are kept, at twice it solved again, and the force is then the one a new
+// contact at the tilted pose gets; with gap_tolerance 1 the same tilt keeps them (the tilt alone,
+// not the cache's points or angle, solved them again). A twist about the normal by 10 times the
+// critical tilt of t2, tol delta / r1, keeps them, and the force within 1e-4 of a new contact's.
+// (A tilt about t2 moves the contact point along the edge by more than the cache's 1e-2 R_vol:
+// the cache itself refreshes.)
+TEST(TrueGapLaw, ATiltThatChangesTheGapSolvesTheRungsAgain) {
+  const Superquadric shape = table1Shape();
+  const Table1Result r = runTable1Case(table1Cases[1], 1e-3);
+  const double E = effectiveModulus(1e9, 0.3, 1e9, 0.3), delta = r.contact.overlap, tolerance = TrueGapLaw{}.gapTolerance;
+  const TrueGapRungs ladder = trueGapLadder(shape, shape);
+  const PairGap gap({shape, Pose{}}, {shape, r.second}, r.contact);
+  const GapContact upper = gapContact(gap, ladder.overlap(ladder.segment(delta) + 1), E, TrueGapLaw{}.cells, 1e-5);
+  const Vec3 centre = 0.5 * (r.contact.pointA + r.contact.pointB), n = r.contact.normal;
+  const Vec3 t1 = contactMajorAxis(r.contact.curvatureA, r.contact.curvatureB, n);
+  const auto turned = [&](double angle, const Vec3& axis) {
+    const Quat turn(Eigen::AngleAxisd(angle, axis));
+    return Pose{centre + turn * (r.second.position - centre), turn * r.second.orientation};
+  };
+  // Rungs solved after the turn, and the force then.
+  const auto afterTurning = [&](const Pose& pose, const TrueGapLaw& law) {
+    World world = pairWorld(shape, r.second, law, 1);
+    ContactModel model = world.contactModel(0, 0);
+    model.curvatureTolerance = 1e-2;
+    world.setContactModel(0, 0, model);
+    world.computeForces();
+    const long long before = world.totalStatistics().trueGapRungs;
+    world.particles().position[slotOfB(world)] = pose.position;
+    world.particles().orientation[slotOfB(world)] = pose.orientation;
+    world.computeForces();
+    double force = 0.0;
+    for (const ContactView c : world.contacts()) force = c.normalLoad().force;
+    return std::pair{world.totalStatistics().trueGapRungs - before, force};
+  };
+  TrueGapLaw loose;
+  loose.gapTolerance = 1.0;
+  std::printf("reaches %.4f (t1), %.4f (t2) R_vol\n", upper.reach1 / r.volumeEquivalentRadius, upper.reach2 / r.volumeEquivalentRadius);
+  const double critical = tolerance * delta / upper.reach2;
+  const Pose tilted = turned(2.0 * critical, t1);
+  const auto [keptRungs, keptForce] = afterTurning(turned(0.5 * critical, t1), TrueGapLaw{});
+  const auto [solvedRungs, solvedForce] = afterTurning(tilted, TrueGapLaw{});
+  const auto [looseRungs, looseForce] = afterTurning(tilted, loose);
+  const double freshTilted = engineForce(shape, tilted, TrueGapLaw{}, 1);
+  std::printf("critical tilt %.3e rad; tilted twice that: kept %.9e N, solved again %.9e N, a new contact %.9e N\n", critical,
+              looseForce, solvedForce, freshTilted);
+  EXPECT_EQ(keptRungs, 0);
+  EXPECT_GT(keptForce, 0.0);
+  EXPECT_EQ(solvedRungs, 2);
+  EXPECT_NEAR(solvedForce / freshTilted, 1.0, 1e-6);
+  EXPECT_EQ(looseRungs, 0);
+  EXPECT_GT(looseForce, 0.0);
+  const double twist = 10.0 * tolerance * delta / upper.reach1;
+  EXPECT_LT(std::max(2.0 * critical, twist), 1e-2);
+  const Pose twisted = turned(twist, n);
+  const auto [twistRungs, twistForce] = afterTurning(twisted, TrueGapLaw{});
+  const double fresh = engineForce(shape, twisted, TrueGapLaw{}, 1);
+  std::printf("twisted %.3e rad: kept %.9e N, a new contact %.9e N\n", twist, twistForce, fresh);
+  EXPECT_EQ(twistRungs, 0);
+  EXPECT_NEAR(twistForce / fresh, 1.0, 1e-4);
 }
 
 }  // namespace

@@ -136,8 +136,10 @@ template <PairKind Kind>
   return motion;
 }
 
-/// The law's view of contact k from its curvature cache while that holds; otherwise the
-/// curvatures at the new contact points are computed and the cache refreshed.
+/// The law's view of contact k from its curvature cache while that holds, and under the true-gap
+/// law while the bodies' tilt since keeps the gap across the contact within the law's
+/// gap_tolerance of the overlap; otherwise the curvatures at the new contact points are computed
+/// and the cache refreshed.
 template <PairKind Kind>
 LawGeometry cachedLawGeometry(const InteractionScene& scene, const ContactModel& model, ContactStore& s,
                               std::uint32_t k, ContactGeometry& g, const ContactKinematics& motion, double cosHalfAngle) {
@@ -148,7 +150,13 @@ LawGeometry cachedLawGeometry(const InteractionScene& scene, const ContactModel&
   const double reference = wall ? motion.volumeRadiusA : std::sqrt(motion.volumeRadiusA * motion.volumeRadiusB);
   CurvatureCache& cache = s.curvatureCache[k];
   const Mat3 RA = p.orientation[a].toRotationMatrix();
-  if (!cache.holds(g.localPointA, g.localPointB, relative, model.curvatureTolerance * reference, cosHalfAngle)) {
+  const TrueGapLaw* trueGap = s.withTrueGap ? std::get_if<TrueGapLaw>(&model.normal) : nullptr;
+  const auto tiltedTooFar = [&] {  // the true-gap law's rungs: the gap across the contact changed too much
+    if (trueGap == nullptr) return false;
+    const Vec2 tilt = cache.tiltTo(relative, RA.transpose() * g.normal);
+    return !s.trueGap[k].holdAfterTurning(g.overlap, tilt.x(), tilt.y(), trueGap->gapTolerance);
+  };
+  if (!cache.holds(g.localPointA, g.localPointB, relative, model.curvatureTolerance * reference, cosHalfAngle) || tiltedTooFar()) {
     const Superquadric& A = scene.shapes[p.shape[a]];
     if constexpr (wall) {
       addCurvatures(g, A, poseOf(p, a));

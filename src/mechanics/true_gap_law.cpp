@@ -19,10 +19,21 @@ bool TrueGapRungs::holds(double delta) const {
   return weight == 0.0 || !(delta > 0.0) || hasSegment(segment(delta));
 }
 
-void TrueGapRungs::set(int k, double rungForce, double rungArea) {
-  if (!(rungForce > 0.0 && rungArea > 0.0)) throw std::invalid_argument("TrueGapRungs::set: a rung's force and area must be > 0");
+bool TrueGapRungs::holdAfterTurning(double delta, double tilt1, double tilt2, double tolerance) const {
+  if (weight == 0.0 || !(delta > 0.0)) return true;
+  const int k = segment(delta), i = (has(k + 1) ? k + 1 : k) - lowest;
+  if (!has(i + lowest)) return true;
+  return std::abs(tilt1) * reach2[i] + std::abs(tilt2) * reach1[i] <= tolerance * delta;
+}
+
+void TrueGapRungs::set(int k, double rungForce, double rungArea, double rungReach1, double rungReach2) {
+  if (!(rungForce > 0.0 && rungArea > 0.0 && rungReach1 >= 0.0 && rungReach2 >= 0.0)) {
+    throw std::invalid_argument("TrueGapRungs::set: a rung's force and area must be > 0, its reaches >= 0");
+  }
   force[k - lowest] = rungForce;
   area[k - lowest] = rungArea;
+  reach1[k - lowest] = rungReach1;
+  reach2[k - lowest] = rungReach2;
   solved |= 1u << (k - lowest);
 }
 
@@ -40,6 +51,13 @@ TrueGapLaw TrueGapLaw::read(const LawInput& in, const PairElasticity&) {
                            "] (cells per side of the coarse grid)");
     }
     law.cells = static_cast<int>(cells);
+  }
+  if (in.has("gap_tolerance")) {
+    law.gapTolerance = in.number("gap_tolerance");
+    if (!(law.gapTolerance >= 0.0 && law.gapTolerance <= 1.0)) {
+      in.fail("gap_tolerance", "must be in [0, 1] (the change of the gap across the contact, as a fraction of the overlap, at which "
+                               "a turn of the bodies re-solves its rungs)");
+    }
   }
   return law;
 }

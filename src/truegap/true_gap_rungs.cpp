@@ -23,8 +23,8 @@ TrueGapRungs trueGapLadder(const Superquadric& A, const Superquadric& B) {
 
 RungSolution solveRung(const TrueGapRungs& rungs, int k, const PairGap& gap, double effectiveModulus, int cells) {
   try {
-    const HalfspaceContact c = gapContact(gap, rungs.overlap(k), effectiveModulus, cells, rungTolerance);
-    return {c.force, c.area};
+    const GapContact c = gapContact(gap, rungs.overlap(k), effectiveModulus, cells, rungTolerance);
+    return {c.force, c.area, c.reach1, c.reach2};
   } catch (const std::exception&) {  // (inside the engine's parallel loops: nothing may escape)
     return {};
   }
@@ -34,7 +34,7 @@ void take(TrueGapRungs& rungs, int k, const RungSolution& solution) {
   if (solution.failed()) {
     rungs.fail(k);
   } else {
-    rungs.set(k, solution.force, solution.area);
+    rungs.set(k, solution.force, solution.area, solution.reach1, solution.reach2);
   }
 }
 

@@ -78,7 +78,13 @@ for law in "boundary_element 16 512 8 1000 64.5" "true_gap 8 64 4 100 16.5"; do
 done
 # A key the true-gap law does not take (a driver key of the other laws, here) is refused by the registry.
 printf '{%s "geometry": %s, "law": {"type": "true_gap", "eccentricity": "exact"}}]}' "$reference" "$pair" > "$scratch/reference.json"
-expect_error "true_gap unknown key" 1 "curves\[0\].law: 'eccentricity' unknown key \(allowed: type, and for true_gap: cells\)" \
+expect_error "true_gap unknown key" 1 "curves\[0\].law: 'eccentricity' unknown key \(allowed: type, and for true_gap: cells, gap_tolerance\)" \
   "$sqdem" contact "$scratch/reference.json" --out "$out"
+# gap_tolerance: a fraction of the overlap in [0, 1].
+for tolerance in -0.01 1.5; do
+  printf '{%s "geometry": %s, "law": {"type": "true_gap", "gap_tolerance": %s}}]}' "$reference" "$pair" "$tolerance" > "$scratch/reference.json"
+  expect_error "true_gap gap_tolerance $tolerance" 1 "curves\[0\].law: 'gap_tolerance' must be in \[0, 1\] .the change of the gap across the contact" \
+    "$sqdem" contact "$scratch/reference.json" --out "$out"
+done
 check "nothing written for the refused references" test ! -e "$out"
 finish

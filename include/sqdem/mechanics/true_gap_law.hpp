@@ -34,6 +34,8 @@ struct TrueGapRungs {
 
   std::array<double, count> force{};  ///< (N) at rung k: force[k - lowest]
   std::array<double, count> area{};   ///< (m^2)
+  std::array<double, count> reach1{};  ///< (m) how far the contact reaches along the plane's t1 (truegap/pair_gap.hpp)
+  std::array<double, count> reach2{};  ///< (m) along t2
   std::uint32_t solved = 0;           ///< bit k - lowest: rung k solved
   std::uint32_t failures = 0;         ///< bit k - lowest: rung k's contact failed on this pose
   double length = 0.0;                ///< R_ref (m)
@@ -50,8 +52,15 @@ struct TrueGapRungs {
   /// Whether the law at `overlap` has every rung it needs: none (w = 0, or no overlap), or both
   /// of the overlap's segment.
   bool holds(double overlap) const;
-  /// Rung k solved: force (N) and area (m^2) > 0.
-  void set(int k, double rungForce, double rungArea);
+  /// Whether the rungs still hold after the bodies turned against each other since they were
+  /// solved by the rotation vector (tilt1, tilt2, twist) (rad) on the plane's axes t1, t2, n: the
+  /// tilt changes the gap at a point (x, y) of the contact by x tilt2 - y tilt1 (the twist not
+  /// at all, between flat faces), at most |tilt1| r2 + |tilt2| r1 with the reaches r1, r2 at the
+  /// overlap segment's upper rung (its lower where only that is solved), which must stay within
+  /// tolerance x overlap. True at w = 0, without overlap or without either rung.
+  bool holdAfterTurning(double overlap, double tilt1, double tilt2, double tolerance) const;
+  /// Rung k solved: force (N), area (m^2) > 0 and reaches (m) >= 0.
+  void set(int k, double rungForce, double rungArea, double rungReach1, double rungReach2);
   void fail(int k) { failures |= 1u << (k - lowest); }
   /// Every rung unsolved (a new pose), the ladder kept.
   void forget() { solved = failures = 0; }
@@ -61,9 +70,12 @@ struct TrueGapRungs {
 double trueGapWeight(double n1A, double n2A, double n1B, double n2B);
 
 struct TrueGapLaw {
-  static constexpr std::array<std::string_view, 1> keys{"cells"};
+  static constexpr std::array<std::string_view, 2> keys{"cells", "gap_tolerance"};
   static constexpr int fewestCells = 8, mostCells = 64;
   int cells = 16;  ///< of the coarse grid, per side (fewestCells ... mostCells)
+  /// The rungs are solved again once a turn of the bodies has changed the gap across the
+  /// contact by this fraction of the overlap (TrueGapRungs::holdAfterTurning), [0, 1].
+  double gapTolerance = 0.05;
 
   struct History {};
   static TrueGapLaw read(const LawInput& in, const PairElasticity& pair);

@@ -10,10 +10,10 @@ namespace sqdem {
 /// A ladder for the pair: R_ref and the weight of its exponents, no rung solved.
 TrueGapRungs trueGapLadder(const Superquadric& A, const Superquadric& B);
 
-/// A rung's half-space contact: force (N) and area (m^2), both 0 where it failed
-/// (pair_contact.hpp's reasons, or no cell in contact).
+/// A rung's half-space contact: force (N), area (m^2) and reach along t1 and t2 (m), all 0 where
+/// it failed (pair_contact.hpp's reasons, or no cell in contact).
 struct RungSolution {
-  double force = 0.0, area = 0.0;
+  double force = 0.0, area = 0.0, reach1 = 0.0, reach2 = 0.0;
   bool failed() const { return !(force > 0.0 && area > 0.0); }
 };
 
