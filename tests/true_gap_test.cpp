@@ -274,6 +274,29 @@ TEST(TrueGapLaw, ABondsLoadAddsToTheLaws) {
   EXPECT_EQ(bonded[0], bonded[1]);
 }
 
+// The tilt bound's cases (TrueGapRungs::holdAfterTurning): |tilt1| r2 + |tilt2| r1 against
+// tol delta with the reaches of the overlap segment's upper rung, its lower where only that is
+// solved; always held at w = 0, without overlap, and without either rung.
+TEST(TrueGapLaw, TheTiltBoundTakesEachAxisReach) {
+  TrueGapRungs r;
+  r.length = 1.0;
+  r.weight = 1.0;
+  const double delta = 1.5e-3, tol = 0.05;  // segment -10 (2^-10 = 9.8e-4 ... 2^-9 = 2.0e-3)
+  EXPECT_TRUE(r.holdAfterTurning(delta, 1.0, 1.0, tol));  // no rung
+  r.set(-10, 1.0, 1.0, 0.25, 0.0625);                      // the lower rung only (reaches exact in float)
+  EXPECT_TRUE(r.holdAfterTurning(delta, 0.99 * tol * delta / 0.0625, 0.0, tol));
+  EXPECT_FALSE(r.holdAfterTurning(delta, 1.01 * tol * delta / 0.0625, 0.0, tol));
+  EXPECT_TRUE(r.holdAfterTurning(delta, 0.0, -0.99 * tol * delta / 0.25, tol));
+  EXPECT_FALSE(r.holdAfterTurning(delta, 0.0, -1.01 * tol * delta / 0.25, tol));
+  EXPECT_FALSE(r.holdAfterTurning(delta, 0.6 * tol * delta / 0.0625, 0.6 * tol * delta / 0.25, tol));  // the two add
+  r.set(-9, 2.0, 2.0, 0.5, 0.125);  // the upper rung's reaches take over
+  EXPECT_TRUE(r.holdAfterTurning(delta, 0.0, 0.99 * tol * delta / 0.5, tol));
+  EXPECT_FALSE(r.holdAfterTurning(delta, 0.0, 1.01 * tol * delta / 0.5, tol));
+  EXPECT_TRUE(r.holdAfterTurning(0.0, 1.0, 1.0, tol));
+  r.weight = 0.0;
+  EXPECT_TRUE(r.holdAfterTurning(delta, 1.0, 1.0, tol));
+}
+
 // The rungs under a turn (docs/contact_laws.md, "The true-gap law"; TrueGapRungs::holdAfterTurning):
 // the pair of Table 1 case 2 (a face on an edge, delta / R_vol = 1e-3, curvature tolerance 1e-2)
 // turned through the contact. A tilt theta about the rungs' plane axis t1 (the contact ellipse's
@@ -299,16 +322,25 @@ TEST(TrueGapLaw, ATiltThatChangesTheGapSolvesTheRungsAgain) {
     const Quat turn(Eigen::AngleAxisd(angle, axis));
     return Pose{centre + turn * (r.second.position - centre), turn * r.second.orientation};
   };
-  // Rungs solved after the turn, and the force then.
+  // Rungs solved after the turn, and the force then; the whole pair turned by `frame` (A off the
+  // identity: the tilt is taken in A's frame).
+  const Quat frame(Eigen::AngleAxisd(0.7, Vec3(1.0, 2.0, 3.0).normalized()));
   const auto afterTurning = [&](const Pose& pose, const TrueGapLaw& law) {
     World world = pairWorld(shape, r.second, law, 1);
     ContactModel model = world.contactModel(0, 0);
     model.curvatureTolerance = 1e-2;
     world.setContactModel(0, 0, model);
+    ParticleStore& p = world.particles();
+    const std::size_t b = slotOfB(world), a = 1 - b;
+    const auto place = [&](const Pose& poseB) {
+      p.orientation[a] = frame;
+      p.position[b] = frame * poseB.position;
+      p.orientation[b] = frame * poseB.orientation;
+    };
+    place(r.second);
     world.computeForces();
     const long long before = world.totalStatistics().trueGapRungs;
-    world.particles().position[slotOfB(world)] = pose.position;
-    world.particles().orientation[slotOfB(world)] = pose.orientation;
+    place(pose);
     world.computeForces();
     double force = 0.0;
     for (const ContactView c : world.contacts()) force = c.normalLoad().force;

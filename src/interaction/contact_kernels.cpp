@@ -136,6 +136,20 @@ template <PairKind Kind>
   return motion;
 }
 
+/// B's tilt against A since a curvature cache was kept, for the true-gap rungs' bound
+/// (TrueGapRungs::holdAfterTurning): its turn from the kept relative orientation to `relative`
+/// (q_A* q_B) as a rotation vector in A's frame, along the rungs' plane axes t1 (the kept major
+/// axis laid on the plane as the rungs' gap lays it, truegap/pair_gap.hpp) and t2 = n x t1, n
+/// the contact normal now (A's frame); its twist about n left out.
+Vec2 tiltSince(const CurvatureCache& cache, const Quat& relative, const Vec3& n) {
+  Quat turn = relative * Quat(cache.relative).conjugate();  // applied on the left: in A's frame
+  if (turn.w() < 0.0) turn.coeffs() = -turn.coeffs();
+  const double half = turn.vec().norm();  // sin(angle / 2)
+  if (!(half > 0.0)) return Vec2::Zero();
+  const Vec3 rotation = 2.0 * std::atan2(half, turn.w()) / half * turn.vec(), t1 = planeAxis(cache.majorAxisA, n);
+  return {rotation.dot(t1), rotation.dot(n.cross(t1))};
+}
+
 /// The law's view of contact k from its curvature cache while that holds, and under the true-gap
 /// law while the bodies' tilt since keeps the gap across the contact within the law's
 /// gap_tolerance of the overlap; otherwise the curvatures at the new contact points are computed
@@ -152,8 +166,8 @@ LawGeometry cachedLawGeometry(const InteractionScene& scene, const ContactModel&
   const Mat3 RA = p.orientation[a].toRotationMatrix();
   const TrueGapLaw* trueGap = s.withTrueGap ? std::get_if<TrueGapLaw>(&model.normal) : nullptr;
   const auto tiltedTooFar = [&] {  // the true-gap law's rungs: the gap across the contact changed too much
-    if (trueGap == nullptr) return false;
-    const Vec2 tilt = cache.tiltTo(relative, RA.transpose() * g.normal);
+    if (trueGap == nullptr || s.trueGap[k].weight == 0.0) return false;
+    const Vec2 tilt = tiltSince(cache, relative, RA.transpose() * g.normal);
     return !s.trueGap[k].holdAfterTurning(g.overlap, tilt.x(), tilt.y(), trueGap->gapTolerance);
   };
   if (!cache.holds(g.localPointA, g.localPointB, relative, model.curvatureTolerance * reference, cosHalfAngle) || tiltedTooFar()) {

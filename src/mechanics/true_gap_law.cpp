@@ -21,8 +21,9 @@ bool TrueGapRungs::holds(double delta) const {
 
 bool TrueGapRungs::holdAfterTurning(double delta, double tilt1, double tilt2, double tolerance) const {
   if (weight == 0.0 || !(delta > 0.0)) return true;
-  const int k = segment(delta), i = (has(k + 1) ? k + 1 : k) - lowest;
-  if (!has(i + lowest)) return true;
+  const int k = segment(delta), rung = has(k + 1) ? k + 1 : k;
+  if (!has(rung)) return true;
+  const int i = rung - lowest;
   return std::abs(tilt1) * reach2[i] + std::abs(tilt2) * reach1[i] <= tolerance * delta;
 }
 
@@ -32,8 +33,8 @@ void TrueGapRungs::set(int k, double rungForce, double rungArea, double rungReac
   }
   force[k - lowest] = rungForce;
   area[k - lowest] = rungArea;
-  reach1[k - lowest] = rungReach1;
-  reach2[k - lowest] = rungReach2;
+  reach1[k - lowest] = static_cast<float>(rungReach1);
+  reach2[k - lowest] = static_cast<float>(rungReach2);
   solved |= 1u << (k - lowest);
 }
 

@@ -15,14 +15,13 @@ const ContactGeometry& converged(const ContactGeometry& contact) {
   return contact;
 }
 
-/// t1 projected on the plane normal to n, or any tangent where it has no part there (a cache
-/// that kept no major axis): the region's search finds its own axes.
-Vec3 tangent(const Vec3& t1, const Vec3& n) {
+}  // namespace
+
+// (Where t1 has no part on the plane, the region's search finds its own axes.)
+Vec3 planeAxis(const Vec3& t1, const Vec3& n) {
   const Vec3 t = t1 - t1.dot(n) * n;
   return t.norm() > 1e-6 * t1.norm() && t.norm() > 0.0 ? Vec3(t.normalized()) : Vec3(n.unitOrthogonal());
 }
-
-}  // namespace
 
 PairGap::PairGap(const PairBody& A, const PairBody& B, const ContactGeometry& contact)
     : PairGap(A, B, 0.5 * (converged(contact).pointA + contact.pointB), contact.normal,
@@ -38,7 +37,7 @@ PairGap PairGap::touchingAt(const Superquadric& A, const Superquadric& B, const 
 PairGap::PairGap(const PairBody& A, const PairBody& B, const Vec3& origin, const Vec3& normal, const Vec3& t1, double overlap,
                  const RelativeRadii& radii)
     : shapeA_(&A.shape), shapeB_(&B.shape), poseA_(A.pose), poseB_(B.pose), origin_(origin), normal_(normal),
-      t1_(tangent(t1, normal)), t2_(normal.cross(t1_)),
+      t1_(planeAxis(t1, normal)), t2_(normal.cross(t1_)),
       overlap_(overlap), referenceLength_(referenceVolumeRadius(A.shape, B.shape)), quadraticAspect_(std::sqrt(radii.ratio())),
       majorRadius_(radii.Rj) {}
 

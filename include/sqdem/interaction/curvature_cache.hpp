@@ -12,8 +12,6 @@
 // faces round into edges (n = 6: up to ~5 eps measured). Measured in the run time vs error
 // benchmark (bench/accuracy_bench.cpp).
 
-#include <cmath>
-
 #include "sqdem/math/types.hpp"
 #include "sqdem/mechanics/elliptic.hpp"
 
@@ -33,20 +31,6 @@ struct CurvatureCache {
   bool holds(const Vec3& a, const Vec3& b, const Quat& q, double tolerance, double cosHalfAngle) const {
     return radii.Rc > 0.0 && (a - localA).squaredNorm() <= tolerance * tolerance &&
            (b - localB).squaredNorm() <= tolerance * tolerance && std::abs(q.coeffs().dot(relative)) >= cosHalfAngle;
-  }
-  /// The turn from the relative orientation kept to q as a rotation vector in A's frame, on the
-  /// axes of the true-gap rungs' plane (truegap/pair_gap.hpp) for the contact normal n now (A's
-  /// frame): t1 the major axis kept laid on the plane (any tangent where it has no part there),
-  /// t2 = n x t1. Returns its components (tilt1, tilt2) (rad); the twist about n is left out.
-  Vec2 tiltTo(const Quat& q, const Vec3& n) const {
-    Quat d = q * Quat(relative).conjugate();  // B's turn as A sees it
-    if (d.w() < 0.0) d.coeffs() = -d.coeffs();
-    const double half = d.vec().norm();
-    if (!(half > 0.0)) return Vec2::Zero();
-    const Vec3 turn = 2.0 * std::atan2(half, d.w()) / half * d.vec();
-    const Vec3 laid = majorAxisA - majorAxisA.dot(n) * n;
-    const Vec3 t1 = laid.norm() > 1e-6 * majorAxisA.norm() && laid.norm() > 0.0 ? Vec3(laid.normalized()) : Vec3(n.unitOrthogonal());
-    return {turn.dot(t1), turn.dot(n.cross(t1))};
   }
 };
 

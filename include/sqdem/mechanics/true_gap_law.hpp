@@ -3,7 +3,9 @@
 // superquadrics from the half-space contact of their true gap, which holds for any gap,
 // Hertzian or not (a face pressed on an edge). This file is the law's arithmetic on a contact's
 // ladder of solved rungs; truegap/true_gap_rungs.hpp solves the rungs from the pair's gap, and
-// the engine keeps them per contact while its curvature cache holds (curvature_cache.hpp).
+// the engine keeps them per contact while its curvature cache holds (curvature_cache.hpp) and
+// the bodies' tilt since leaves the gap across the contact within the law's gap_tolerance of the
+// overlap (holdAfterTurning).
 //
 // The ladder: delta_k = 2^k R_ref (k = -20 ... -1, R_ref = sqrt(R_vol,A R_vol,B)), at each rung
 // the force and area of the pair's half-space contact at that approach (16 x 16 cells). Between
@@ -34,8 +36,8 @@ struct TrueGapRungs {
 
   std::array<double, count> force{};  ///< (N) at rung k: force[k - lowest]
   std::array<double, count> area{};   ///< (m^2)
-  std::array<double, count> reach1{};  ///< (m) how far the contact reaches along the plane's t1 (truegap/pair_gap.hpp)
-  std::array<double, count> reach2{};  ///< (m) along t2
+  std::array<float, count> reach1{};  ///< (m) how far the contact reaches along the plane's t1 (truegap/pair_gap.hpp): a bound's length
+  std::array<float, count> reach2{};  ///< (m) along t2
   std::uint32_t solved = 0;           ///< bit k - lowest: rung k solved
   std::uint32_t failures = 0;         ///< bit k - lowest: rung k's contact failed on this pose
   double length = 0.0;                ///< R_ref (m)
@@ -52,12 +54,13 @@ struct TrueGapRungs {
   /// Whether the law at `overlap` has every rung it needs: none (w = 0, or no overlap), or both
   /// of the overlap's segment.
   bool holds(double overlap) const;
-  /// Whether the rungs still hold after the bodies turned against each other since they were
-  /// solved by the rotation vector (tilt1, tilt2, twist) (rad) on the plane's axes t1, t2, n: the
-  /// tilt changes the gap at a point (x, y) of the contact by x tilt2 - y tilt1 (the twist not
-  /// at all, between flat faces), at most |tilt1| r2 + |tilt2| r1 with the reaches r1, r2 at the
-  /// overlap segment's upper rung (its lower where only that is solved), which must stay within
-  /// tolerance x overlap. True at w = 0, without overlap or without either rung.
+  /// Whether the rungs still hold after B turned against A since they were solved by a rotation
+  /// vector with components tilt1, tilt2 (rad) along the plane's axes t1, t2 (its twist about n
+  /// left out: it moves no point of two flat faces off their plane): the tilt changes the gap at
+  /// a point (x, y) of the contact by y tilt1 - x tilt2, at most |tilt1| r2 + |tilt2| r1 with the
+  /// reaches r1, r2 at the overlap segment's upper rung (its lower where only that is solved),
+  /// which must stay within tolerance x overlap. True at w = 0, without overlap or without either
+  /// rung.
   bool holdAfterTurning(double overlap, double tilt1, double tilt2, double tolerance) const;
   /// Rung k solved: force (N), area (m^2) > 0 and reaches (m) >= 0.
   void set(int k, double rungForce, double rungArea, double rungReach1, double rungReach2);

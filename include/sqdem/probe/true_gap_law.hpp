@@ -18,8 +18,9 @@ namespace sqdem::probe {
 
 class TrueGapCurveLaw final : public CurveLaw {
  public:
-  /// `law` {"type": "true_gap", "cells": 8-64 (default 16)}, read and checked by the law registry
-  /// (TrueGapLaw::read, as in a scene's interactions); the particles, the detector's contact
+  /// `law` {"type": "true_gap", "cells": 8-64 (default 16), "gap_tolerance" (no effect at one
+  /// pose)}, read and checked by the law registry (TrueGapLaw::read, as in a scene's
+  /// interactions); the particles, the detector's contact
   /// at their given poses and its relative radii (capped as the curve's geometry says: the
   /// elliptic Hertz blended in near ellipsoids).
   TrueGapCurveLaw(const json& law, const std::string& where, const Particle& A, const Particle& B, const ContactGeometry& contact,

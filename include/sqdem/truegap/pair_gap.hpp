@@ -21,6 +21,10 @@
 
 namespace sqdem {
 
+/// t1 laid on the plane normal to n (unit), or any tangent where it has no part there (a cache
+/// that kept no major axis): the gap's axis t1 (below).
+Vec3 planeAxis(const Vec3& t1, const Vec3& n);
+
 struct PairBody {
   const Superquadric& shape;
   Pose pose;

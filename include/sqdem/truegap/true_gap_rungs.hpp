@@ -14,7 +14,7 @@ TrueGapRungs trueGapLadder(const Superquadric& A, const Superquadric& B);
 /// it failed (pair_contact.hpp's reasons, or no cell in contact).
 struct RungSolution {
   double force = 0.0, area = 0.0, reach1 = 0.0, reach2 = 0.0;
-  bool failed() const { return !(force > 0.0 && area > 0.0); }
+  bool failed() const { return !(force > 0.0 && area > 0.0 && reach1 >= 0.0 && reach2 >= 0.0); }
 };
 
 /// Rung k's contact on the pair's gap with E* (Pa), without touching the ladder (threads may
