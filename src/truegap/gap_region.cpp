@@ -91,6 +91,7 @@ GapRegion gapRegion(const PairGap& gap, double level) {
   }
   // The extent of the crossings along their principal axes.
   GapRegion region;
+  region.level = level;
   region.major = Vec2(std::cos(frame.angle), std::sin(frame.angle));
   for (const Vec2& p : crossings) {
     region.low1 = std::min(region.low1, p.dot(region.major)), region.high1 = std::max(region.high1, p.dot(region.major));
@@ -110,16 +111,26 @@ GapGrid gapGrid(const PairGap& gap, const GapRegion& region, int cells, double m
   grid.y0 = region.low2 - pad2;
   grid.hx = (region.high1 - region.low1 + 2.0 * pad1) / cells;
   grid.hy = (region.high2 - region.low2 + 2.0 * pad2) / cells;
-  grid.gap.resize(static_cast<std::size_t>(cells) * cells);
-  // Each cell's lines start from its neighbour's heights: the one before it in its row, or the
-  // row's first cell below it.
+  grid.gap.assign(static_cast<std::size_t>(cells) * cells, std::numeric_limits<double>::infinity());
+  // Each row is walked from the contact's column outwards, each way until the gap is at or above
+  // the level and rising: the gap is convex along the row (pair_gap.hpp), so it stays above the
+  // level beyond, and those cells are left +infinity (a third of the grid's cells in the peer n = 6
+  // bed, docs/performance.md). Each cell's lines start from the heights of the cell before it on
+  // the walk, a row's first cell from the row below's.
+  const auto at = [&](int i, int j, PairGap::Heights& near, double distance) {
+    const Vec2 p = grid.x(i) * e1 + grid.y(j) * e2;
+    return grid.gap[i + static_cast<std::size_t>(cells) * j] = gap(p.x(), p.y(), near, distance);
+  };
+  const int contactColumn = std::clamp(static_cast<int>(std::floor(-grid.x0 / grid.hx)), 0, cells - 1);
   PairGap::Heights rowStart;
   for (int j = 0; j < cells; ++j) {
-    PairGap::Heights near = rowStart;
-    for (int i = 0; i < cells; ++i) {
-      const Vec2 p = grid.x(i) * e1 + grid.y(j) * e2;
-      grid.gap[i + static_cast<std::size_t>(cells) * j] = gap(p.x(), p.y(), near, i == 0 ? grid.hy : grid.hx);
-      if (i == 0) rowStart = near;
+    at(contactColumn, j, rowStart, grid.hy);
+    for (const int step : {1, -1}) {
+      PairGap::Heights near = rowStart;
+      for (int i = contactColumn + step, before = contactColumn; i >= 0 && i < cells; before = i, i += step) {
+        const double g = at(i, j, near, grid.hx);
+        if (g >= region.level && g > grid.gap[before + static_cast<std::size_t>(cells) * j]) break;  // (+infinity after a finite gap: the line left a body)
+      }
     }
   }
   return grid;

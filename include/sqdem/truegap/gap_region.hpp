@@ -12,10 +12,11 @@
 namespace sqdem {
 
 /// The region's principal axes on the tangent plane (in the gap's t1, t2 coordinates) and its
-/// extent along them (m), the contact at 0.
+/// extent along them (m), the contact at 0; the gap's level (m) that bounds it.
 struct GapRegion {
   Vec2 major = Vec2::UnitX();  ///< unit
   double low1 = 0.0, high1 = 0.0, low2 = 0.0, high2 = 0.0;
+  double level = 0.0;
 
   Vec2 minor() const { return {-major.y(), major.x()}; }
 };
@@ -25,7 +26,8 @@ struct GapRegion {
 GapRegion gapRegion(const PairGap& gap, double level);
 
 /// The gap on cells x cells covering the region, widened on each side by `margin` times its
-/// extent; the grid's x axis is the region's major axis.
+/// extent; the grid's x axis is the region's major axis. Cells where the gap is known to be at or
+/// above the region's level are left +infinity (they cannot touch: halfspace_contact.hpp).
 GapGrid gapGrid(const PairGap& gap, const GapRegion& region, int cells, double margin);
 
 }  // namespace sqdem
