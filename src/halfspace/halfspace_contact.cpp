@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <cstring>
 #include <numbers>
 #include <stdexcept>
 
@@ -19,25 +20,47 @@ struct CellSpan {
   int first = 0, last = 0;
 };
 
-/// u += K * p on an nx x ny grid, summed directly over the loaded cells, in each row j at the
-/// cells rows[j]; `kernel` at offsets (di, dj), (di + nx - 1) + (2 nx - 1) (dj + ny - 1).
-/// Compiled also for x86-64-v3 (four lanes instead of two) and chosen at run time: each cell's
-/// sum is the same sequence of operations either way, the same bits.
+/// A loaded cell (si, sj) of the direct convolution: its pressure, and its offset in the kernel,
+/// (nx - 1 - si) - (2 nx - 1) sj: added to target row j's start (2 nx - 1) (j + ny - 1) it points
+/// at K(-si, j - sj), the kernel's row for that pair of rows.
+struct Load {
+  std::ptrdiff_t kernelOffset = 0;
+  double value = 0.0;
+};
+
+/// Four targets in GCC's vector extension (one instruction on x86-64-v3, two on the baseline).
+using Quad = double __attribute__((vector_size(4 * sizeof(double))));
+/// Targets per register block of the direct convolution, two quads; the kernel is padded by as
+/// many values.
+constexpr int block = 8;
+
+/// u = K * p on an nx x ny grid, summed directly over the loaded cells, in each row j at the
+/// cells rows[j] (u untouched elsewhere); `kernel` at offsets (di, dj),
+/// (di + nx - 1) + (2 nx - 1) (dj + ny - 1), followed by `block` values of padding. Each row's
+/// cells are taken in blocks of eight held in registers while the loads (in row order, then along
+/// the row) are summed into them: the same sums in the same order, cell by cell, as adding each
+/// load's share to u in turn, with one store per block instead of one per load (docs/
+/// performance.md, "Cheaper rungs"). Compiled also for x86-64-v3 (four lanes instead of two) and
+/// chosen at run time: the same sequence of operations either way, the same bits.
 #if defined(__x86_64__) && defined(__GLIBC__) && !defined(__clang__)  // an ifunc: GCC on glibc
 [[gnu::target_clones("arch=x86-64-v3", "default")]]
 #endif
-void directConvolution(const double* kernel, const double* p, double* u, int nx, int ny, const CellSpan* rows) {
-  const std::size_t row = static_cast<std::size_t>(2 * nx - 1);
-  for (int sj = 0; sj < ny; ++sj) {
-    for (int si = 0; si < nx; ++si) {
-      const double load = p[si + static_cast<std::size_t>(nx) * sj];
-      if (load == 0.0) continue;
-      for (int j = 0; j < ny; ++j) {
-        // u(i, j) += K(i - si, j - sj) load: the kernel's row j - sj from offset -si on
-        const double* k = kernel + row * static_cast<std::size_t>(j - sj + ny - 1) + static_cast<std::size_t>(nx - 1 - si);
-        double* out = u + static_cast<std::size_t>(nx) * j;
-        for (int i = rows[j].first; i < rows[j].last; ++i) out[i] += k[i] * load;
+void directConvolution(const double* kernel, const Load* loads, std::size_t loadCount, double* u, int nx, int ny, const CellSpan* rows) {
+  const std::ptrdiff_t row = 2 * nx - 1;
+  for (int j = 0; j < ny; ++j) {
+    const double* kernelRow = kernel + row * (j + ny - 1);
+    for (int first = rows[j].first; first < rows[j].last; first += block) {
+      Quad low = {}, high = {};
+      for (std::size_t l = 0; l < loadCount; ++l) {  // u(i, j) += K(i - si, j - sj) p(si, sj), i = first ... first + 7
+        const double* k = kernelRow + loads[l].kernelOffset + first;
+        Quad kLow, kHigh;
+        std::memcpy(&kLow, k, sizeof kLow);
+        std::memcpy(&kHigh, k + 4, sizeof kHigh);
+        low += kLow * loads[l].value;
+        high += kHigh * loads[l].value;
       }
+      const int count = std::min(block, rows[j].last - first);
+      for (int q = 0; q < count; ++q) u[first + q + static_cast<std::ptrdiff_t>(nx) * j] = q < 4 ? low[q] : high[q - 4];
     }
   }
 }
@@ -63,7 +86,7 @@ struct HalfspaceSolver::Convolution {
       : nx(grid.nx), ny(grid.ny), mx(2 * grid.nx), my(2 * grid.ny), wholeRows(grid.ny, CellSpan{0, grid.nx}) {
     const double scale = 1.0 / (std::numbers::pi * effectiveModulus);
     const bool small = nx * ny <= largestDirect;
-    if (small) direct.resize(static_cast<std::size_t>(2 * nx - 1) * (2 * ny - 1));
+    if (small) direct.resize(static_cast<std::size_t>(2 * nx - 1) * (2 * ny - 1) + block);
     else kernel.resize(static_cast<std::size_t>(mx) * my);
     // Love's solution is even in x and in y: one quadrant computed, four filled.
     for (int dj = 0; dj < ny; ++dj) {
@@ -107,8 +130,16 @@ struct HalfspaceSolver::Convolution {
   std::vector<double> apply(const std::vector<double>& p) const { return apply(p, wholeRows); }
 
   std::vector<double> applyDirect(const std::vector<double>& p, const std::vector<CellSpan>& rows) const {
+    std::vector<Load> loads;
+    const std::ptrdiff_t row = 2 * nx - 1;
+    for (int sj = 0; sj < ny; ++sj) {
+      for (int si = 0; si < nx; ++si) {
+        const double load = p[si + static_cast<std::size_t>(nx) * sj];
+        if (load != 0.0) loads.push_back({nx - 1 - si - row * sj, load});
+      }
+    }
     std::vector<double> u(p.size(), 0.0);
-    directConvolution(direct.data(), p.data(), u.data(), nx, ny, rows.data());
+    directConvolution(direct.data(), loads.data(), loads.size(), u.data(), nx, ny, rows.data());
     return u;
   }
 
