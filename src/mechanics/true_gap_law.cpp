@@ -21,20 +21,17 @@ bool TrueGapRungs::holds(double delta) const {
 
 bool TrueGapRungs::holdAfterTurning(double delta, double tilt1, double tilt2, double tolerance) const {
   if (weight == 0.0 || !(delta > 0.0)) return true;
-  const int k = segment(delta), rung = has(k + 1) ? k + 1 : k;
-  if (!has(rung)) return true;
-  const int i = rung - lowest;
-  return std::abs(tilt1) * reach2[i] + std::abs(tilt2) * reach1[i] <= tolerance * delta;
+  const int k = segment(delta), upper = has(k + 1) ? k + 1 : k;
+  if (!has(upper)) return true;
+  const TrueGapRung& r = rung[upper - lowest];
+  return std::abs(tilt1) * r.reach2 + std::abs(tilt2) * r.reach1 <= tolerance * delta;
 }
 
 void TrueGapRungs::set(int k, double rungForce, double rungArea, double rungReach1, double rungReach2) {
   if (!(rungForce > 0.0 && rungArea > 0.0 && rungReach1 >= 0.0 && rungReach2 >= 0.0)) {
     throw std::invalid_argument("TrueGapRungs::set: a rung's force and area must be > 0, its reaches >= 0");
   }
-  force[k - lowest] = rungForce;
-  area[k - lowest] = rungArea;
-  reach1[k - lowest] = static_cast<float>(rungReach1);
-  reach2[k - lowest] = static_cast<float>(rungReach2);
+  rung[k - lowest] = {rungForce, rungArea, static_cast<float>(rungReach1), static_cast<float>(rungReach2)};
   solved |= 1u << (k - lowest);
 }
 
@@ -84,9 +81,9 @@ NormalResponse TrueGapLaw::force(const NormalContact& c, double overlap, History
   HertzLaw::History none;
   const NormalResponse hertz = w < 1.0 ? HertzLaw{}.force(c, overlap, none) : NormalResponse{};
   if (w == 0.0) return hertz;
-  const TrueGapRungs& r = *c.trueGap;
-  const double s = overlap / r.overlap(k), m = std::log2(r.force[i + 1] / r.force[i]), force = r.force[i] * std::pow(s, m);
-  const double area = r.area[i] * std::pow(s, std::log2(r.area[i + 1] / r.area[i]));
+  const TrueGapRung &low = c.trueGap->rung[i], &high = c.trueGap->rung[i + 1];
+  const double s = overlap / c.trueGap->overlap(k), m = std::log2(high.force / low.force), force = low.force * std::pow(s, m);
+  const double area = low.area * std::pow(s, std::log2(high.area / low.area));
   return {.force = (1.0 - w) * hertz.force + w * force,
           .stiffness = (1.0 - w) * hertz.stiffness + w * m * force / overlap,
           .area = (1.0 - w) * hertz.area + w * area};
@@ -102,10 +99,10 @@ double TrueGapLaw::energy(const NormalContact& c, double overlap) const {
   const TrueGapRungs& r = *c.trueGap;
   double sum = 0.0;
   for (int k = TrueGapRungs::lowest; k <= top; ++k) {
-    const int i = k - TrueGapRungs::lowest;
-    const double m = std::log2(r.force[i + 1] / r.force[i]), start = r.overlap(k);
+    const TrueGapRung &low = r.rung[k - TrueGapRungs::lowest], &high = r.rung[k + 1 - TrueGapRungs::lowest];
+    const double m = std::log2(high.force / low.force), start = r.overlap(k);
     const double end = k == top ? overlap : r.overlap(k + 1), from = k == TrueGapRungs::lowest ? 0.0 : 1.0;
-    sum += r.force[i] * start / (m + 1.0) * (std::pow(end / start, m + 1.0) - from);
+    sum += low.force * start / (m + 1.0) * (std::pow(end / start, m + 1.0) - from);
   }
   return (1.0 - w) * hertz + w * sum;
 }

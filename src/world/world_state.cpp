@@ -20,7 +20,7 @@ namespace {
 
 /// The payload's version: raised whenever writeState (or the run checkpoint around it) writes other
 /// records or in another order.
-constexpr std::uint64_t stateVersion = 20;
+constexpr std::uint64_t stateVersion = 21;
 
 /// Checks what the engine will follow in a whole state of n particles and `walls` walls (every
 /// rank reads the same, so every rank throws alike).

@@ -30,18 +30,25 @@
 
 namespace sqdem {
 
-/// A contact's ladder (above): the rungs solved so far.
+/// One rung of a ladder: the half-space contact at delta_k.
+struct TrueGapRung {
+  double force = 0.0;  ///< (N)
+  double area = 0.0;   ///< (m^2)
+  float reach1 = 0.0f;  ///< (m) how far the contact reaches along the plane's t1 (truegap/pair_gap.hpp): a bound's length
+  float reach2 = 0.0f;  ///< (m) along t2
+};
+
+/// A contact's ladder (above): the rungs solved so far. A contact-step reads the head and one
+/// segment's two rungs, each rung's numbers side by side: three cache lines at most, not five as
+/// with an array per quantity (docs/performance.md, "Cheaper rungs").
 struct TrueGapRungs {
   static constexpr int lowest = -20, count = 20;  // delta_k = 2^k R_ref, k = -20 ... -1
 
-  std::array<double, count> force{};  ///< (N) at rung k: force[k - lowest]
-  std::array<double, count> area{};   ///< (m^2)
-  std::array<float, count> reach1{};  ///< (m) how far the contact reaches along the plane's t1 (truegap/pair_gap.hpp): a bound's length
-  std::array<float, count> reach2{};  ///< (m) along t2
-  std::uint32_t solved = 0;           ///< bit k - lowest: rung k solved
-  std::uint32_t failures = 0;         ///< bit k - lowest: rung k's contact failed on this pose
-  double length = 0.0;                ///< R_ref (m)
-  double weight = 0.0;                ///< w of the blend (above)
+  std::uint32_t solved = 0;    ///< bit k - lowest: rung k solved
+  std::uint32_t failures = 0;  ///< bit k - lowest: rung k's contact failed on this pose
+  double length = 0.0;         ///< R_ref (m)
+  double weight = 0.0;         ///< w of the blend (above)
+  std::array<TrueGapRung, count> rung{};  ///< rung k: rung[k - lowest]
 
   double overlap(int k) const;  ///< delta_k (m)
   /// The lower rung of the segment holding the overlap (the lowest or highest segment's beyond
