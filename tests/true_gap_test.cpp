@@ -21,6 +21,7 @@
 
 #include "sqdem/mechanics/bond_frame.hpp"
 #include "sqdem/mechanics/hertz_law.hpp"
+#include "sqdem/truegap/gap_region.hpp"
 #include "sqdem/truegap/pair_contact.hpp"
 #include "sqdem/truegap/true_gap_curve.hpp"
 #include "sqdem/truegap/true_gap_rungs.hpp"
@@ -68,6 +69,44 @@ TEST(TrueGapLaw, RandomBlockyPairsMeetTheReference) {
     std::printf("%-11s largest %.4f median %.4f over %zu\n", kind.c_str(), e.back(), e[e.size() / 2], e.size());
     EXPECT_LT(e.back(), 0.01) << kind;
   }
+}
+
+// The gap grid's walk (truegap/gap_region.hpp): along each row it stops where the gap is at or
+// above the level and rising, the gap being convex; every cell it leaves out (+infinity) must be
+// at or above the level, and every cell it evaluates must be the gap there (its lines started
+// from a neighbour's heights: the same to Newton's tolerance, surface_along_line.hpp).
+TEST(TrueGapGrid, TheCellsLeftOutAreAtOrAboveTheLevel) {
+  std::mt19937 rng(20261206);
+  long leftOut = 0, evaluated = 0;
+  for (int kind = 0; kind < 4; ++kind) {
+    for (int pair = 0; pair < 4; ++pair) {
+      PosedPair p;
+      ASSERT_TRUE(testing::randomBlockyPair(kind, rng, p)) << p.kind;
+      const PairGap gap({p.A, p.poseA}, {p.B, p.poseB}, p.contact);
+      const double R = referenceVolumeRadius(p.A, p.B);
+      for (const double f : {1e-4, 1e-3, 3e-2}) {
+        const GapRegion region = gapRegion(gap, f * R);
+        for (const double margin : {0.04, 0.5}) {
+          const GapGrid grid = gapGrid(gap, region, 16, margin);
+          for (int j = 0; j < grid.ny; ++j) {
+            for (int i = 0; i < grid.nx; ++i) {
+              const Vec2 q = grid.x(i) * region.major + grid.y(j) * region.minor();
+              const double direct = gap(q.x(), q.y()), walked = grid.gap[i + static_cast<std::size_t>(grid.nx) * j];
+              if (std::isinf(walked)) {
+                ++leftOut;
+                EXPECT_GE(direct, region.level - 1e-10 * R) << p.kind << " cell " << i << ", " << j;
+              } else {
+                ++evaluated;
+                EXPECT_NEAR(walked, direct, 1e-10 * R) << p.kind << " cell " << i << ", " << j;
+              }
+            }
+          }
+        }
+      }
+    }
+  }
+  std::printf("cells left out %ld, evaluated %ld\n", leftOut, evaluated);
+  EXPECT_GT(leftOut, 0);
 }
 
 TEST(TrueGapLaw, TwoEllipsoidsAreEllipticHertz) {

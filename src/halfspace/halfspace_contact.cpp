@@ -196,12 +196,12 @@ HalfspaceContact HalfspaceSolver::solve(double approach, double load, double tol
   std::vector<double>& p = result.pressure;
   p.assign(n, 0.0);
   // The start: a uniform pressure carrying the load (Polonsky & Keer), or at an approach Hertz's
-  // pressure p0 sqrt(1 - r^2 / a^2), p0 = 2 E* a / (pi R), a^2 = R delta (Johnson 1985, Eqs.
-  // 4.23-4.25) written in the gap h = r^2 / (2 R): (2 E* / (pi a)) sqrt(2 delta (delta / 2 - h))
+  // pressure p0 sqrt(1 - r^2 / a^2), p0 = 2 E* a / (pi R), a^2 = R delta (Johnson 1985, Sec.
+  // 4.2) written in the gap h = r^2 / (2 R): (2 E* / (pi a)) sqrt(2 delta (delta / 2 - h))
   // over the cells with h < delta / 2, a the radius of their area (or, should none be there, the
   // same over the cells with h < delta); started again four times softer should a step release
-  // every cell. Closer to the solution than a pressure linear in the interference: ~6 % fewer
-  // iterations in the peer n = 6 bed's rungs (docs/performance.md).
+  // every cell. Closer to the solution than a pressure linear in the interference: 6 % fewer
+  // iterations in the peer n = 6 bed's rungs (docs/performance.md, "Cheaper rungs").
   const auto below = [&](double level) { return std::count_if(h.begin(), h.end(), [&](double g) { return g < level; }); };
   const auto interfering = below(approach), hertzian = below(0.5 * approach);
   const double level = hertzian > 0 ? 0.5 * approach : approach;

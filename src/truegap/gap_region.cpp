@@ -114,9 +114,9 @@ GapGrid gapGrid(const PairGap& gap, const GapRegion& region, int cells, double m
   grid.gap.assign(static_cast<std::size_t>(cells) * cells, std::numeric_limits<double>::infinity());
   // Each row is walked from the contact's column outwards, each way until the gap is at or above
   // the level and rising: the gap is convex along the row (pair_gap.hpp), so it stays above the
-  // level beyond, and those cells are left +infinity (a third of the grid's cells in the peer n = 6
-  // bed, docs/performance.md). Each cell's lines start from the heights of the cell before it on
-  // the walk, a row's first cell from the row below's.
+  // level beyond, and those cells are left +infinity (a rung of the peer n = 6 bed evaluates 210
+  // of its 256 cells: docs/performance.md, "Cheaper rungs"). Each cell's lines start from the
+  // heights of the cell before it on the walk, a row's first cell from the row below's.
   const auto at = [&](int i, int j, PairGap::Heights& near, double distance) {
     const Vec2 p = grid.x(i) * e1 + grid.y(j) * e2;
     return grid.gap[i + static_cast<std::size_t>(cells) * j] = gap(p.x(), p.y(), near, distance);
