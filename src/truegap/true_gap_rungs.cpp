@@ -8,8 +8,9 @@ namespace sqdem {
 namespace {
 
 /// The relative pressure change at which a rung's solve stops: its force then within 4e-6 of the
-/// converged one (1e-6 on average over the rungs of the peer n = 6 bed), far inside the coarse
-/// grid's error (~2e-3); half the iterations of 1e-10.
+/// converged one (1e-6 on average over the rungs of the peer n = 6 bed; measured with the
+/// solver's earlier start, linear in the interference), far inside the coarse grid's error
+/// (~2e-3); half the iterations of 1e-10.
 constexpr double rungTolerance = 1e-5;
 
 }  // namespace

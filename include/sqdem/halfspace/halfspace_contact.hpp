@@ -52,7 +52,8 @@ class HalfspaceSolver {
   HalfspaceSolver(const HalfspaceSolver&) = delete;
   HalfspaceSolver& operator=(const HalfspaceSolver&) = delete;
 
-  /// The contact at the approach delta (m) to the relative pressure change `tolerance`.
+  /// The contact at the approach delta (m) to the relative pressure change `tolerance`; none
+  /// (converged, no force) at delta <= 0.
   HalfspaceContact atApproach(double approach, double tolerance = 1e-10, int maxIterations = 5000) const;
   /// The contact carrying the load W > 0 (N).
   HalfspaceContact atLoad(double load, double tolerance = 1e-10, int maxIterations = 5000) const;

@@ -39,8 +39,9 @@ struct TrueGapRung {
 };
 
 /// A contact's ladder (above): the rungs solved so far. A contact-step reads the head and one
-/// segment's two rungs, each rung's numbers side by side: three cache lines at most, not five as
-/// with an array per quantity (docs/performance.md, "Cheaper rungs").
+/// segment's two rungs, each rung's numbers side by side: 72 bytes on two to four cache lines,
+/// where an array per quantity spread them over five or more (docs/performance.md, "Cheaper
+/// rungs").
 struct TrueGapRungs {
   static constexpr int lowest = -20, count = 20;  // delta_k = 2^k R_ref, k = -20 ... -1
 

@@ -27,7 +27,8 @@ GapRegion gapRegion(const PairGap& gap, double level);
 
 /// The gap on cells x cells covering the region, widened on each side by `margin` times its
 /// extent; the grid's x axis is the region's major axis. Cells where the gap is known to be at or
-/// above the region's level are left +infinity (they cannot touch: halfspace_contact.hpp).
+/// above the region's level are left +infinity (they cannot touch: halfspace_contact.hpp), so the
+/// grid serves approaches up to that level only.
 GapGrid gapGrid(const PairGap& gap, const GapRegion& region, int cells, double margin);
 
 }  // namespace sqdem
