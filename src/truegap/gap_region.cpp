@@ -7,6 +7,7 @@
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include <Eigen/Eigenvalues>
 
@@ -24,6 +25,44 @@ struct RayFrame {
     const Vec2 e1(std::cos(angle), std::sin(angle)), e2(-e1.y(), e1.x());
     return std::cos(t) * e1 + aspect * std::sin(t) * e2;
   }
+};
+
+/// Evenly spaced points of the plane, one after another along a line, each point's surface lines
+/// started beyond both surfaces: from the last two points' heights extended along the line (A's
+/// top is concave over the plane and B's bottom convex, pair_gap.hpp, so the extension lies
+/// beyond them, by their second difference, ~spacing^2 / R: Newton then needs ~2 steps per
+/// line instead of ~4), or one spacing beyond the last point's while there is only that one.
+class LineWalk {
+ public:
+  explicit LineWalk(double spacing) : spacing_(spacing) {}
+
+  /// The gap at the next point (x, y).
+  double next(const PairGap& gap, double x, double y) {
+    const bool extend = count_ >= 2;
+    PairGap::Heights near = last_;
+    if (extend) near = {2.0 * last_.top - before_.top, 2.0 * last_.bottom - before_.bottom};
+    // (The extension's slack, far above the heights' rounding and below Newton's tolerance.)
+    const double g = gap(x, y, near, extend ? 1e-6 * spacing_ : spacing_);
+    before_ = last_, last_ = near, ++count_;
+    return g;
+  }
+  /// A walk along another line through the last point, `spacing` apart.
+  LineWalk turned(double spacing) const {
+    LineWalk walk(spacing);
+    walk.last_ = last_, walk.count_ = std::min(count_, 1);
+    return walk;
+  }
+  /// The walk back along the line from its last point, through the one before.
+  LineWalk reversed() const {
+    LineWalk walk = *this;
+    if (count_ >= 2) std::swap(walk.before_, walk.last_);
+    return walk;
+  }
+
+ private:
+  double spacing_;
+  PairGap::Heights before_, last_;
+  int count_ = 0;
 };
 
 /// rho where the gap along rho d first reaches the level (the gap convex and below it at 0), the
@@ -115,20 +154,22 @@ GapGrid gapGrid(const PairGap& gap, const GapRegion& region, int cells, double m
   // Each row is walked from the contact's column outwards, each way until the gap is at or above
   // the level and rising: the gap is convex along the row (pair_gap.hpp), so it stays above the
   // level beyond, and those cells are left +infinity (a rung of the peer n = 6 bed evaluates 210
-  // of its 256 cells: docs/performance.md, "Cheaper rungs"). Each cell's lines start from the
-  // heights of the cell before it on the walk, a row's first cell from the row below's.
-  const auto at = [&](int i, int j, PairGap::Heights& near, double distance) {
+  // of its 256 cells: docs/performance.md, "Cheaper rungs"). The contact's column is walked up
+  // the rows, each row's walks start from it.
+  const auto at = [&](int i, int j, LineWalk& walk) {
     const Vec2 p = grid.x(i) * e1 + grid.y(j) * e2;
-    return grid.gap[i + static_cast<std::size_t>(cells) * j] = gap(p.x(), p.y(), near, distance);
+    return grid.gap[i + static_cast<std::size_t>(cells) * j] = walk.next(gap, p.x(), p.y());
   };
   const int contactColumn = std::clamp(static_cast<int>(std::floor(-grid.x0 / grid.hx)), 0, cells - 1);
-  PairGap::Heights rowStart;
+  LineWalk column(grid.hy);
   for (int j = 0; j < cells; ++j) {
-    at(contactColumn, j, rowStart, grid.hy);
+    at(contactColumn, j, column);
+    LineWalk right = column.turned(grid.hx);  // the walk to the right, kept at its first cell: the left one's start
     for (const int step : {1, -1}) {
-      PairGap::Heights near = rowStart;
+      LineWalk walk = step == 1 ? column.turned(grid.hx) : right.reversed();
       for (int i = contactColumn + step, before = contactColumn; i >= 0 && i < cells; before = i, i += step) {
-        const double g = at(i, j, near, grid.hx);
+        const double g = at(i, j, walk);
+        if (step == 1 && i == contactColumn + 1) right = walk;
         if (g >= region.level && g > grid.gap[before + static_cast<std::size_t>(cells) * j]) break;  // (+infinity after a finite gap: the line left a body)
       }
     }
