@@ -82,6 +82,7 @@ struct HalfspaceSolver::Convolution {
   std::vector<Complex> kernel;   // its padded transform; large grids
   mutable Eigen::FFT<double> fft;
   std::vector<CellSpan> wholeRows;  // every cell of every row
+  mutable std::vector<Load> loads;  // the direct sum's loaded cells, kept between calls (one solver serves one thread at a time)
 
   Convolution(const GapGrid& grid, double effectiveModulus)
       : nx(grid.nx), ny(grid.ny), mx(2 * grid.nx), my(2 * grid.ny), wholeRows(grid.ny, CellSpan{0, grid.nx}) {
@@ -125,13 +126,18 @@ struct HalfspaceSolver::Convolution {
   }
 
   /// u at every cell, or (summed directly) at the cells `rows` only, 0 elsewhere.
-  std::vector<double> apply(const std::vector<double>& p, const std::vector<CellSpan>& rows) const {
-    return direct.empty() ? applyTransformed(p) : applyDirect(p, rows);
+  void apply(const std::vector<double>& p, const std::vector<CellSpan>& rows, std::vector<double>& u) const {
+    if (direct.empty()) applyTransformed(p, u);
+    else applyDirect(p, rows, u);
   }
-  std::vector<double> apply(const std::vector<double>& p) const { return apply(p, wholeRows); }
+  std::vector<double> apply(const std::vector<double>& p) const {
+    std::vector<double> u;
+    apply(p, wholeRows, u);
+    return u;
+  }
 
-  std::vector<double> applyDirect(const std::vector<double>& p, const std::vector<CellSpan>& rows) const {
-    std::vector<Load> loads;
+  void applyDirect(const std::vector<double>& p, const std::vector<CellSpan>& rows, std::vector<double>& u) const {
+    loads.clear();
     const std::ptrdiff_t row = 2 * nx - 1;
     for (int sj = 0; sj < ny; ++sj) {
       for (int si = 0; si < nx; ++si) {
@@ -139,12 +145,11 @@ struct HalfspaceSolver::Convolution {
         if (load != 0.0) loads.push_back({nx - 1 - si - row * sj, load});
       }
     }
-    std::vector<double> u(p.size(), 0.0);
+    u.assign(p.size(), 0.0);
     directConvolution(direct.data(), loads.data(), loads.size(), u.data(), nx, ny, rows.data());
-    return u;
   }
 
-  std::vector<double> applyTransformed(const std::vector<double>& p) const {
+  void applyTransformed(const std::vector<double>& p, std::vector<double>& u) const {
     std::vector<Complex> a(kernel.size(), 0.0);
     for (int j = 0; j < ny; ++j) {
       for (int i = 0; i < nx; ++i) a[static_cast<std::size_t>(i) + static_cast<std::size_t>(mx) * j] = p[i + static_cast<std::size_t>(nx) * j];
@@ -152,11 +157,10 @@ struct HalfspaceSolver::Convolution {
     transform(a, true);
     for (std::size_t k = 0; k < a.size(); ++k) a[k] *= kernel[k];
     transform(a, false);
-    std::vector<double> u(p.size());
+    u.resize(p.size());
     for (int j = 0; j < ny; ++j) {
       for (int i = 0; i < nx; ++i) u[i + static_cast<std::size_t>(nx) * j] = a[static_cast<std::size_t>(i) + static_cast<std::size_t>(mx) * j].real();
     }
-    return u;
   }
 };
 
@@ -238,46 +242,54 @@ HalfspaceContact HalfspaceSolver::solve(double approach, double load, double tol
       rows[j] = span.last > 0 ? span : CellSpan{};
     }
   }
-  std::vector<double> g(n), t(n, 0.0), previous(n), correction(n), u = convolution_->apply(p, rows);
+  // Off the spans p, t and the corrections stay 0: every loop below runs over the spans' cells,
+  // row by row (the same sums, in the same order, as over all cells).
+  const auto each = [&](auto&& f) {
+    for (int j = 0; j < grid_.ny; ++j) {
+      const std::size_t start = static_cast<std::size_t>(grid_.nx) * j;
+      for (int i = rows[j].first; i < rows[j].last; ++i) f(start + i);
+    }
+  };
+  std::vector<double> g(n), t(n, 0.0), previous(n), correction(n), u, Kt, Kc;
+  convolution_->apply(p, rows, u);
   double gOld = 1.0;
   bool conjugate = false;
   const auto meanOverContact = [&](const std::vector<double>& v) {
     double sum = 0.0;
     long count = 0;
-    for (std::size_t k = 0; k < n; ++k) {
+    each([&](std::size_t k) {
       if (p[k] > 0.0) sum += v[k], ++count;
-    }
+    });
     return count > 0 ? sum / static_cast<double>(count) : 0.0;
   };
   for (result.iterations = 0; result.iterations < maxIterations;) {
     ++result.iterations;
-    if (std::all_of(p.begin(), p.end(), [](double v) { return v == 0.0; })) {
+    bool released = true;
+    each([&](std::size_t k) { released = released && p[k] == 0.0; });
+    if (released) {
       stiffness *= 0.25;
       seed();
-      u = convolution_->apply(p, rows);
+      convolution_->apply(p, rows, u);
       conjugate = false;
     }
-    for (std::size_t k = 0; k < n; ++k) g[k] = u[k] + h[k] - approach;
+    each([&](std::size_t k) { g[k] = u[k] + h[k] - approach; });
     if (byLoad) {
       const double mean = meanOverContact(g);
       for (double& v : g) v -= mean;
     }
     double G = 0.0;
-    for (std::size_t k = 0; k < n; ++k) {
+    each([&](std::size_t k) {
       if (p[k] > 0.0) G += g[k] * g[k];
-    }
-    for (std::size_t k = 0; k < n; ++k) t[k] = p[k] > 0.0 ? g[k] + (conjugate ? G / gOld : 0.0) * t[k] : 0.0;
+    });
+    const double beta = conjugate ? G / gOld : 0.0;
+    each([&](std::size_t k) { t[k] = p[k] > 0.0 ? g[k] + beta * t[k] : 0.0; });
     gOld = G;
-    const std::vector<double> Kt = convolution_->apply(t, rows);
-    std::vector<double> r = Kt;
-    if (byLoad) {
-      const double mean = meanOverContact(r);
-      for (double& v : r) v -= mean;
-    }
+    convolution_->apply(t, rows, Kt);
+    const double shift = byLoad ? meanOverContact(Kt) : 0.0;  // r = K t, less its mean over the contact at a load
     double gt = 0.0, rt = 0.0;
-    for (std::size_t k = 0; k < n; ++k) {
-      if (p[k] > 0.0) gt += g[k] * t[k], rt += r[k] * t[k];
-    }
+    each([&](std::size_t k) {
+      if (p[k] > 0.0) gt += g[k] * t[k], rt += (Kt[k] - shift) * t[k];
+    });
     if (!(rt > 0.0)) {  // the gap already zero on the contact: nothing to do
       result.converged = G == 0.0;
       break;
@@ -285,7 +297,8 @@ HalfspaceContact HalfspaceSolver::solve(double approach, double load, double tol
     const double tau = gt / rt;
     previous = p;
     conjugate = true;
-    for (std::size_t k = 0; k < n; ++k) {
+    bool corrected = false;
+    each([&](std::size_t k) {
       const double stepped = previous[k] - tau * t[k];  // t = 0 off the contact
       p[k] = previous[k] > 0.0 ? std::max(stepped, 0.0) : 0.0;
       if (p[k] == 0.0 && g[k] < 0.0) {  // interpenetrating without pressure
@@ -293,21 +306,22 @@ HalfspaceContact HalfspaceSolver::solve(double approach, double load, double tol
         conjugate = false;
       }
       correction[k] = p[k] - stepped;  // 0 but where a cell was released or taken in
-    }
-    for (std::size_t k = 0; k < n; ++k) u[k] -= tau * Kt[k];
-    if (std::any_of(correction.begin(), correction.end(), [](double v) { return v != 0.0; })) {
-      const std::vector<double> Kc = convolution_->apply(correction, rows);
-      for (std::size_t k = 0; k < n; ++k) u[k] += Kc[k];
+      corrected = corrected || correction[k] != 0.0;
+    });
+    each([&](std::size_t k) { u[k] -= tau * Kt[k]; });
+    if (corrected) {
+      convolution_->apply(correction, rows, Kc);
+      each([&](std::size_t k) { u[k] += Kc[k]; });
     }
     double total = 0.0, change = 0.0;
-    for (const double v : p) total += v;
+    each([&](std::size_t k) { total += p[k]; });
     if (byLoad && total > 0.0) {
       const double scale = load / (cell * total);
       for (double& v : p) v *= scale;
       for (double& v : u) v *= scale;
       total = load / cell;
     }
-    for (std::size_t k = 0; k < n; ++k) change += std::abs(p[k] - previous[k]);
+    each([&](std::size_t k) { change += std::abs(p[k] - previous[k]); });
     if (total > 0.0 && change <= tolerance * total) {
       result.converged = true;
       break;
