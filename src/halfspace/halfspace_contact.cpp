@@ -244,12 +244,10 @@ HalfspaceContact HalfspaceSolver::solve(double approach, double load, double tol
   }
   // Off the spans p, t and the corrections stay 0: every loop below runs over the spans' cells,
   // row by row (the same sums, in the same order, as over all cells).
-  const auto each = [&](auto&& f) {
-    for (int j = 0; j < grid_.ny; ++j) {
-      const std::size_t start = static_cast<std::size_t>(grid_.nx) * j;
-      for (int i = rows[j].first; i < rows[j].last; ++i) f(start + i);
-    }
-  };
+  std::vector<std::size_t> cells;
+  for (int j = 0; j < grid_.ny; ++j) {
+    for (int i = rows[j].first; i < rows[j].last; ++i) cells.push_back(static_cast<std::size_t>(grid_.nx) * j + i);
+  }
   std::vector<double> g(n), t(n, 0.0), previous(n), correction(n), u, Kt, Kc;
   convolution_->apply(p, rows, u);
   double gOld = 1.0;
@@ -257,48 +255,46 @@ HalfspaceContact HalfspaceSolver::solve(double approach, double load, double tol
   const auto meanOverContact = [&](const std::vector<double>& v) {
     double sum = 0.0;
     long count = 0;
-    each([&](std::size_t k) {
+    for (const std::size_t k : cells) {
       if (p[k] > 0.0) sum += v[k], ++count;
-    });
+    }
     return count > 0 ? sum / static_cast<double>(count) : 0.0;
   };
   for (result.iterations = 0; result.iterations < maxIterations;) {
     ++result.iterations;
-    bool released = true;
-    each([&](std::size_t k) { released = released && p[k] == 0.0; });
-    if (released) {
+    if (std::all_of(cells.begin(), cells.end(), [&](std::size_t k) { return p[k] == 0.0; })) {
       stiffness *= 0.25;
       seed();
       convolution_->apply(p, rows, u);
       conjugate = false;
     }
-    each([&](std::size_t k) { g[k] = u[k] + h[k] - approach; });
+    for (const std::size_t k : cells) g[k] = u[k] + h[k] - approach;
     if (byLoad) {
       const double mean = meanOverContact(g);
       for (double& v : g) v -= mean;
     }
     double G = 0.0;
-    each([&](std::size_t k) {
+    for (const std::size_t k : cells) {
       if (p[k] > 0.0) G += g[k] * g[k];
-    });
+    }
     const double beta = conjugate ? G / gOld : 0.0;
-    each([&](std::size_t k) { t[k] = p[k] > 0.0 ? g[k] + beta * t[k] : 0.0; });
+    for (const std::size_t k : cells) t[k] = p[k] > 0.0 ? g[k] + beta * t[k] : 0.0;
     gOld = G;
     convolution_->apply(t, rows, Kt);
     const double shift = byLoad ? meanOverContact(Kt) : 0.0;  // r = K t, less its mean over the contact at a load
     double gt = 0.0, rt = 0.0;
-    each([&](std::size_t k) {
+    for (const std::size_t k : cells) {
       if (p[k] > 0.0) gt += g[k] * t[k], rt += (Kt[k] - shift) * t[k];
-    });
+    }
     if (!(rt > 0.0)) {  // the gap already zero on the contact: nothing to do
       result.converged = G == 0.0;
       break;
     }
     const double tau = gt / rt;
-    previous = p;
+    for (const std::size_t k : cells) previous[k] = p[k];
     conjugate = true;
     bool corrected = false;
-    each([&](std::size_t k) {
+    for (const std::size_t k : cells) {
       const double stepped = previous[k] - tau * t[k];  // t = 0 off the contact
       p[k] = previous[k] > 0.0 ? std::max(stepped, 0.0) : 0.0;
       if (p[k] == 0.0 && g[k] < 0.0) {  // interpenetrating without pressure
@@ -307,21 +303,21 @@ HalfspaceContact HalfspaceSolver::solve(double approach, double load, double tol
       }
       correction[k] = p[k] - stepped;  // 0 but where a cell was released or taken in
       corrected = corrected || correction[k] != 0.0;
-    });
-    each([&](std::size_t k) { u[k] -= tau * Kt[k]; });
+    }
+    for (const std::size_t k : cells) u[k] -= tau * Kt[k];
     if (corrected) {
       convolution_->apply(correction, rows, Kc);
-      each([&](std::size_t k) { u[k] += Kc[k]; });
+      for (const std::size_t k : cells) u[k] += Kc[k];
     }
     double total = 0.0, change = 0.0;
-    each([&](std::size_t k) { total += p[k]; });
+    for (const std::size_t k : cells) total += p[k];
     if (byLoad && total > 0.0) {
       const double scale = load / (cell * total);
       for (double& v : p) v *= scale;
       for (double& v : u) v *= scale;
       total = load / cell;
     }
-    each([&](std::size_t k) { change += std::abs(p[k] - previous[k]); });
+    for (const std::size_t k : cells) change += std::abs(p[k] - previous[k]);
     if (total > 0.0 && change <= tolerance * total) {
       result.converged = true;
       break;
