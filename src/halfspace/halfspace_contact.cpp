@@ -91,9 +91,10 @@ struct HalfspaceSolver::Convolution {
     if (small) direct.resize(static_cast<std::size_t>(2 * nx - 1) * (2 * ny - 1) + block);
     else kernel.resize(static_cast<std::size_t>(mx) * my);
     // Love's solution is even in x and in y: one quadrant computed, four filled.
+    const std::vector<double> quadrant = loveGridDisplacements(nx, ny, grid.hx, grid.hy);
     for (int dj = 0; dj < ny; ++dj) {
       for (int di = 0; di < nx; ++di) {
-        const double k = scale * loveRectangleDisplacement(di * grid.hx, dj * grid.hy, 0.5 * grid.hx, 0.5 * grid.hy);
+        const double k = scale * quadrant[di + static_cast<std::size_t>(nx) * dj];
         for (const int si : {di, -di}) {
           for (const int sj : {dj, -dj}) {
             if (small) direct[static_cast<std::size_t>(si + nx - 1) + static_cast<std::size_t>(2 * nx - 1) * (sj + ny - 1)] = k;

@@ -12,9 +12,20 @@
 // r+- = ((x + a)^2 + (y - b)^2)^(1/2) and so on. At the centre of a square (a = b) the
 // bracket is 8 a ln(1 + 2^(1/2)).
 
+#include <vector>
+
 namespace sqdem {
 
 /// The bracket above: u (pi E* / p) at (x, y) of the rectangle of half-sides a, b (m).
 double loveRectangleDisplacement(double x, double y, double a, double b);
+
+/// The bracket for the cells of a grid of hx x hy cells (m) pressed one at a time: at the
+/// centre offsets (di hx, dj hy), 0 <= di < nx, 0 <= dj < ny, as [di + nx dj] (the bracket is even
+/// in x and in y). The cells' corners lie on one lattice, ((m - 1/2) hx, (l - 1/2) hy), and each
+/// logarithm above is of the ratio of two neighbouring corners' sums s + r, shared by the two
+/// cells beside their edge: (nx + 1)(ny + 1) roots and ~2 nx ny logarithms instead of 16 roots and 8
+/// logarithms per cell (docs/performance.md, "Cheaper rungs"). Taken in units of hx (the bracket
+/// is homogeneous of degree 1 in lengths), the same terms to rounding.
+std::vector<double> loveGridDisplacements(int nx, int ny, double hx, double hy);
 
 }  // namespace sqdem
