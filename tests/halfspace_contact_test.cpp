@@ -47,7 +47,7 @@ TEST(LoveInfluence, TheCentreOfASquareAndFarAway) {
 
 // The surface displacement of a pressure field is the sum over the loaded cells of Love's
 // rectangle (its definition), whichever way the solver sums it: directly on a 20 x 40 grid (up to
-// 32 x 32 cells' worth; rows of 20 cells in register blocks of eight, the last one partial) and on
+// 32 x 32 cells' worth; rows of 20 cells in register blocks of sixteen, the last one partial) and on
 // rows shorter than a block (9, 8, 1 cells), by FFT on a 40 x 40 one.
 TEST(HalfspaceContact, TheDisplacementIsTheSumOfLovesRectangles) {
   for (const auto& [nx, ny] : {std::pair{20, 40}, std::pair{9, 5}, std::pair{8, 3}, std::pair{1, 7}, std::pair{40, 40}}) {

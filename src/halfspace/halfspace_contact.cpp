@@ -28,39 +28,42 @@ struct Load {
   double value = 0.0;
 };
 
-/// Four targets in GCC's vector extension (one instruction on x86-64-v3, two on the baseline).
-using Quad = double __attribute__((vector_size(4 * sizeof(double))));
-/// Targets per register block of the direct convolution, two quads; the kernel is padded by as
-/// many values.
-constexpr int block = 8;
+/// Eight targets in GCC's vector extension (one instruction on x86-64-v4, two on v3, four on the
+/// baseline).
+using Octet = double __attribute__((vector_size(8 * sizeof(double))));
+constexpr int lanes = 8, octets = 2;
+/// Targets per register block of the direct convolution, two octets (independent chains of
+/// additions, on which each load's share waits otherwise); the kernel is padded by as many values.
+constexpr int block = lanes * octets;
 
 /// u = K * p on an nx x ny grid, summed directly over the loaded cells, in each row j at the
 /// cells rows[j] (u untouched elsewhere); `kernel` at offsets (di, dj),
 /// (di + nx - 1) + (2 nx - 1) (dj + ny - 1), followed by `block` values of padding. Each row's
-/// cells are taken in blocks of eight held in registers while the loads (in row order, then along
-/// the row) are summed into them: the same sums in the same order, cell by cell, as adding each
-/// load's share to u in turn, with one store per block instead of one per load (docs/
-/// performance.md, "Cheaper rungs"). Compiled also for x86-64-v3 (four lanes instead of two) and
-/// chosen at run time: the same sequence of operations either way, the same bits.
+/// cells are taken in blocks of sixteen held in registers while the loads (in row order, then
+/// along the row) are summed into them: the same sums in the same order, cell by cell, as adding
+/// each load's share to u in turn, with one store per block instead of one per load (docs/
+/// performance.md, "Cheaper rungs"). Compiled also for x86-64-v4 and v3 (eight and four lanes
+/// instead of two) and chosen at run time: the same sequence of operations per cell either way,
+/// the same bits.
 #if defined(__x86_64__) && defined(__GLIBC__) && !defined(__clang__)  // an ifunc: GCC on glibc
-[[gnu::target_clones("arch=x86-64-v3", "default")]]
+[[gnu::target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")]]
 #endif
 void directConvolution(const double* kernel, const Load* loads, std::size_t loadCount, double* u, int nx, int ny, const CellSpan* rows) {
   const std::ptrdiff_t row = 2 * nx - 1;
   for (int j = 0; j < ny; ++j) {
     const double* kernelRow = kernel + row * (j + ny - 1);
     for (int first = rows[j].first; first < rows[j].last; first += block) {
-      Quad low = {}, high = {};
-      for (std::size_t l = 0; l < loadCount; ++l) {  // u(i, j) += K(i - si, j - sj) p(si, sj), i = first ... first + 7
+      Octet sum[octets] = {};
+      for (std::size_t l = 0; l < loadCount; ++l) {  // u(i, j) += K(i - si, j - sj) p(si, sj), i = first ... first + 15
         const double* k = kernelRow + loads[l].kernelOffset + first;
-        Quad kLow, kHigh;
-        std::memcpy(&kLow, k, sizeof kLow);
-        std::memcpy(&kHigh, k + 4, sizeof kHigh);
-        low += kLow * loads[l].value;
-        high += kHigh * loads[l].value;
+        for (int q = 0; q < octets; ++q) {
+          Octet share;
+          std::memcpy(&share, k + lanes * q, sizeof share);
+          sum[q] += share * loads[l].value;
+        }
       }
       const int count = std::min(block, rows[j].last - first);
-      for (int q = 0; q < count; ++q) u[first + q + static_cast<std::ptrdiff_t>(nx) * j] = q < 4 ? low[q] : high[q - 4];
+      for (int c = 0; c < count; ++c) u[first + c + static_cast<std::ptrdiff_t>(nx) * j] = sum[c / lanes][c % lanes];
     }
   }
 }
@@ -69,7 +72,7 @@ void directConvolution(const double* kernel, const Load* loads, std::size_t load
 
 /// u = K * p on the grid: the linear convolution of the pressure with Love's kernel. On small
 /// grids (at most 32 x 32 cells) by direct summation over the loaded cells, each row's span
-/// rounded up to blocks of eight: cheaper than the two transforms below (a 16 x 16 grid: ~10 us
+/// rounded up to blocks of sixteen: cheaper than the two transforms below (a 16 x 16 grid: ~10 us
 /// against ~85 us, measured before the blocks).
 /// On larger ones by FFT on the grid padded to 2 nx x 2 ny (the kernel at offsets
 /// -(n - 1) ... n - 1 wrapped, the pressure zero outside the grid: no periodic images reach the
