@@ -12,7 +12,10 @@ namespace sqdem {
 double TrueGapRungs::overlap(int k) const { return std::ldexp(length, k); }
 
 int TrueGapRungs::segment(double delta) const {
-  return std::clamp(static_cast<int>(std::floor(std::log2(delta / length))), lowest, lowest + count - 2);
+  // floor(log2(delta / length)), exactly: the exponent of delta / length (log2 rounded up to the
+  // next integer just below a rung), for a fraction of the cost (docs/performance.md, "Cheaper
+  // rungs"); 0 and +infinity clamp to the lowest and highest segment.
+  return std::clamp(std::ilogb(delta / length), lowest, lowest + count - 2);
 }
 
 bool TrueGapRungs::holds(double delta) const {
