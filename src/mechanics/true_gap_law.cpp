@@ -12,9 +12,9 @@ namespace sqdem {
 double TrueGapRungs::overlap(int k) const { return std::ldexp(length, k); }
 
 int TrueGapRungs::segment(double delta) const {
-  // floor(log2(delta / length)), exactly: the exponent of delta / length (log2 rounded up to the
-  // next integer just below a rung), for a fraction of the cost (docs/performance.md, "Cheaper
-  // rungs"); 0 and +infinity clamp to the lowest and highest segment.
+  // floor(log2(delta / length)) exactly, as the exponent of delta / length (log2 itself rounds
+  // up to the rung's k just below a rung), for a fraction of the cost (docs/performance.md,
+  // "Cheaper rungs, second round"); +infinity clamps to the highest segment.
   return std::clamp(std::ilogb(delta / length), lowest, lowest + count - 2);
 }
 

@@ -30,19 +30,22 @@ struct RayFrame {
 /// Evenly spaced points of the plane, one after another along a line, each point's surface lines
 /// started beyond both surfaces: from the last two points' heights extended along the line (A's
 /// top is concave over the plane and B's bottom convex, pair_gap.hpp, so the extension lies
-/// beyond them, by their second difference, ~spacing^2 / R: Newton then needs ~2 steps per
-/// line instead of ~4), or one spacing beyond the last point's while there is only that one.
+/// beyond them, by their second difference, ~spacing^2 / R: 2.7 Newton steps per line instead of
+/// 4.0 in the peer n = 6 bed), or one spacing beyond the last point's while there is only that
+/// one or the one before missed a body.
 class LineWalk {
  public:
   explicit LineWalk(double spacing) : spacing_(spacing) {}
 
   /// The gap at the next point (x, y).
   double next(const PairGap& gap, double x, double y) {
-    const bool extend = count_ >= 2;
     PairGap::Heights near = last_;
-    if (extend) near = {2.0 * last_.top - before_.top, 2.0 * last_.bottom - before_.bottom};
-    // (The extension's slack, far above the heights' rounding and below Newton's tolerance.)
-    const double g = gap(x, y, near, extend ? 1e-6 * spacing_ : spacing_);
+    double distance = spacing_;
+    const PairGap::Heights extended{2.0 * last_.top - before_.top, 2.0 * last_.bottom - before_.bottom};
+    if (count_ >= 2 && std::isfinite(extended.top) && std::isfinite(extended.bottom)) {
+      near = extended, distance = 1e-6 * spacing_;  // (a slack far above the heights' rounding)
+    }
+    const double g = gap(x, y, near, distance);
     before_ = last_, last_ = near, ++count_;
     return g;
   }
@@ -122,10 +125,12 @@ GapRegion gapRegion(const PairGap& gap, double level) {
     for (const Vec2& p : crossings) spread += (p - mean) * (p - mean).transpose();
     const Eigen::SelfAdjointEigenSolver<Mat2> axes(spread);  // eigenvalues ascending
     const Vec2 major = axes.eigenvectors().col(1);
-    // Rays spread with aspect a over an elliptic region of aspect alpha cross it at points whose
-    // spread has the aspect sqrt(a alpha) (the rays' parameter is uneven along the ellipse): the
-    // region's is the spread's squared over the rays', exactly for an ellipse. Taking the spread's
-    // own, half-way, took up to four passes (docs/performance.md, "Cheaper rungs").
+    // Rays spread with aspect a over an elliptic region of aspect alpha, centred on the contact
+    // and aligned with them, cross it at points whose spread has the aspect sqrt(a alpha) (the
+    // rays' parameter is uneven along the ellipse; with 16 rays to ~((a - alpha) / (a +
+    // alpha))^8): the region's is the spread's squared over the rays'. Taking the spread's own,
+    // half-way, took up to four passes (docs/performance.md, "Cheaper rungs, second round").
+    // Capped at 1, where the spread's major axis lies across the rays' (the estimate does not hold).
     const double spreadAspect = std::sqrt(std::max(axes.eigenvalues()(0), 0.0) / axes.eigenvalues()(1));
     const RayFrame next{std::atan2(major.y(), major.x()), std::min(1.0, spreadAspect * spreadAspect / frame.aspect)};
     const double turn = std::abs(std::remainder(next.angle - frame.angle, std::numbers::pi));
@@ -171,7 +176,7 @@ GapGrid gapGrid(const PairGap& gap, const GapRegion& region, int cells, double m
     at(contactColumn, j, column);
     LineWalk right = column.turned(grid.hx);  // the walk to the right, kept at its first cell: the left one's start
     for (const int step : {1, -1}) {
-      LineWalk walk = step == 1 ? column.turned(grid.hx) : right.reversed();
+      LineWalk walk = step == 1 ? right : right.reversed();
       for (int i = contactColumn + step, before = contactColumn; i >= 0 && i < cells; before = i, i += step) {
         const double g = at(i, j, walk);
         if (step == 1 && i == contactColumn + 1) right = walk;

@@ -43,7 +43,8 @@ struct HalfspaceContact {
 
 /// Precomputes the influence of the grid's cells on each other (Love's kernel, or its FFT) and
 /// solves contacts on it. Gaps of +infinity mark cells that cannot touch; NaN is refused. One
-/// solver serves one thread at a time (its FFT keeps plans).
+/// solver serves one thread at a time, every member function included (its FFT keeps plans, its
+/// direct sum a list of the loaded cells).
 class HalfspaceSolver {
  public:
   /// effectiveModulus E* (Pa) of the pair; the grid is copied.

@@ -23,9 +23,9 @@ double loveRectangleDisplacement(double x, double y, double a, double b);
 /// centre offsets (di hx, dj hy), 0 <= di < nx, 0 <= dj < ny, as [di + nx dj] (the bracket is even
 /// in x and in y). The cells' corners lie on one lattice, ((m - 1/2) hx, (l - 1/2) hy), and each
 /// logarithm above is of the ratio of two neighbouring corners' sums s + r, shared by the two
-/// cells beside their edge: (nx + 1)(ny + 1) roots and ~2 nx ny logarithms instead of 16 roots and 8
-/// logarithms per cell (docs/performance.md, "Cheaper rungs"). Taken in units of hx (the bracket
-/// is homogeneous of degree 1 in lengths), the same terms to rounding.
+/// cells beside their edge: 2 (nx + 1)(ny + 1) roots and ~2 nx ny logarithms instead of 8 roots and
+/// 4 logarithms per cell (docs/performance.md, "Cheaper rungs, second round"). Taken in units of
+/// hx (the bracket is homogeneous of degree 1 in lengths): the same terms, to rounding.
 std::vector<double> loveGridDisplacements(int nx, int ny, double hx, double hy);
 
 }  // namespace sqdem

@@ -52,8 +52,8 @@ struct TrueGapRungs {
   std::array<TrueGapRung, count> rung{};  ///< rung k: rung[k - lowest]
 
   double overlap(int k) const;  ///< delta_k (m)
-  /// The lower rung of the segment holding the overlap (the lowest or highest segment's beyond
-  /// the ladder).
+  /// The lower rung of the segment holding the overlap > 0 (the lowest or highest segment's
+  /// beyond the ladder).
   int segment(double overlap) const;
   bool has(int k) const { return (solved >> (k - lowest)) & 1u; }
   bool failed(int k) const { return (failures >> (k - lowest)) & 1u; }
