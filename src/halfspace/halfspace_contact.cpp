@@ -42,9 +42,9 @@ constexpr int block = lanes * octets;
 /// cells are taken in blocks of sixteen held in registers while the loads (in row order, then
 /// along the row) are summed into them: the same sums in the same order, cell by cell, as adding
 /// each load's share to u in turn, with one store per block instead of one per load (docs/
-/// performance.md, "Cheaper rungs" and its second round). Compiled also for x86-64-v4 and v3 (eight and four lanes
-/// instead of two) and chosen at run time: the same sequence of operations per cell either way,
-/// the same bits.
+/// performance.md, "Cheaper rungs" and its second round). Compiled also for x86-64-v4 and v3
+/// (eight and four lanes instead of two) and chosen at run time: the same sequence of operations
+/// per cell either way, the same bits.
 #if defined(__x86_64__) && defined(__GLIBC__) && !defined(__clang__)  // an ifunc: GCC on glibc
 [[gnu::target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")]]
 #endif

@@ -30,9 +30,9 @@ struct RayFrame {
 /// Evenly spaced points of the plane, one after another along a line, each point's surface lines
 /// started beyond both surfaces: from the last two points' heights extended along the line (A's
 /// top is concave over the plane and B's bottom convex, pair_gap.hpp, so the extension lies
-/// beyond them, by their second difference, ~spacing^2 / R: 2.7 Newton steps per line instead of
-/// 4.0 in the peer n = 6 bed), or one spacing beyond the last point's while there is only that
-/// one or the one before missed a body.
+/// beyond them, by their second difference, ~spacing^2 / R: 2.7 Newton steps per line of a rung,
+/// its rays' included, instead of 4.0 in the peer n = 6 bed), or one spacing beyond the last
+/// point's while there is only that one or the one before missed a body.
 class LineWalk {
  public:
   explicit LineWalk(double spacing) : spacing_(spacing) {}
